@@ -1,0 +1,78 @@
+//! Meshes on the GPU: a VAO with one interleaved VBO (position, normal, uv,
+//! tangent at locations 0-3) and an EBO of u32 indices.
+
+use super::Gl;
+use crate::geometry::{MeshData, Vertex};
+use anyhow::{Result, anyhow, bail};
+use glow::HasContext;
+
+pub struct Mesh {
+    gl: Gl,
+    pub vao: glow::VertexArray,
+    vbo: glow::Buffer,
+    ebo: glow::Buffer,
+    pub index_count: i32,
+}
+
+impl Mesh {
+    pub fn upload(gl: &Gl, data: &MeshData) -> Result<Mesh> {
+        if data.indices.is_empty() {
+            bail!("mesh has no triangles");
+        }
+        let stride = std::mem::size_of::<Vertex>() as i32;
+        unsafe {
+            let vao = gl.create_vertex_array().map_err(|e| anyhow!("glGenVertexArrays: {e}"))?;
+            let vbo = gl.create_buffer().map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            let ebo = gl.create_buffer().map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            gl.bind_vertex_array(Some(vao));
+            gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
+            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&data.vertices), glow::STATIC_DRAW);
+            gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
+            gl.buffer_data_u8_slice(
+                glow::ELEMENT_ARRAY_BUFFER,
+                as_bytes(&data.indices),
+                glow::STATIC_DRAW,
+            );
+            // location, components, byte offset
+            for (loc, n, off) in [(0u32, 3, 0), (1, 3, 12), (2, 2, 24), (3, 4, 32)] {
+                gl.enable_vertex_attrib_array(loc);
+                gl.vertex_attrib_pointer_f32(loc, n, glow::FLOAT, false, stride, off);
+            }
+            gl.bind_vertex_array(None);
+            gl.bind_buffer(glow::ARRAY_BUFFER, None);
+            gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, None);
+            Ok(Mesh {
+                gl: gl.clone(),
+                vao,
+                vbo,
+                ebo,
+                index_count: data.indices.len() as i32,
+            })
+        }
+    }
+
+    /// glBindVertexArray + glDrawElements(GL_TRIANGLES, ...).
+    pub fn draw(&self) {
+        unsafe {
+            self.gl.bind_vertex_array(Some(self.vao));
+            self.gl
+                .draw_elements(glow::TRIANGLES, self.index_count, glow::UNSIGNED_INT, 0);
+            self.gl.bind_vertex_array(None);
+        }
+    }
+}
+
+fn as_bytes<T: Copy>(v: &[T]) -> &[u8] {
+    // Vertex is repr(C) floats and u32 indices: plain old data with no padding.
+    unsafe { std::slice::from_raw_parts(v.as_ptr() as *const u8, std::mem::size_of_val(v)) }
+}
+
+impl Drop for Mesh {
+    fn drop(&mut self) {
+        unsafe {
+            self.gl.delete_vertex_array(self.vao);
+            self.gl.delete_buffer(self.vbo);
+            self.gl.delete_buffer(self.ebo);
+        }
+    }
+}

@@ -1,0 +1,44 @@
+//! Timer queries (GL_TIME_ELAPSED). On llvmpipe they under-report badly
+//! (rasterization is deferred), so `gloss bench` times with the CPU clock
+//! around glFinish there and reports these only on real GPUs.
+
+use super::Gl;
+use anyhow::{Result, anyhow};
+use glow::HasContext;
+
+/// One GL_TIME_ELAPSED query object.
+pub struct TimerQuery {
+    gl: Gl,
+    pub id: glow::Query,
+}
+
+impl TimerQuery {
+    pub fn new(gl: &Gl) -> Result<TimerQuery> {
+        let id = unsafe { gl.create_query() }.map_err(|e| anyhow!("glGenQueries: {e}"))?;
+        Ok(TimerQuery { gl: gl.clone(), id })
+    }
+
+    /// glBeginQuery(GL_TIME_ELAPSED, id)
+    pub fn begin(&self) {
+        unsafe { self.gl.begin_query(glow::TIME_ELAPSED, self.id) }
+    }
+
+    /// glEndQuery(GL_TIME_ELAPSED)
+    pub fn end(&self) {
+        unsafe { self.gl.end_query(glow::TIME_ELAPSED) }
+    }
+
+    /// Wait for the result; nanoseconds.
+    pub fn result_ns(&self) -> u64 {
+        unsafe {
+            self.gl
+                .get_query_parameter_u64(self.id, glow::QUERY_RESULT)
+        }
+    }
+}
+
+impl Drop for TimerQuery {
+    fn drop(&mut self) {
+        unsafe { self.gl.delete_query(self.id) }
+    }
+}

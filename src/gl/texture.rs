@@ -1,0 +1,190 @@
+//! 2D textures: loaded from PNG (sRGB or linear), or empty render targets.
+
+use super::Gl;
+use anyhow::{Context as _, Result, anyhow, bail};
+use glow::{HasContext, PixelUnpackData};
+use std::path::Path;
+
+/// Largest texture side gloss will load from a file (an absurd PNG is refused
+/// before it is decoded into memory).
+pub const MAX_TEXTURE_SIDE: u32 = 8192;
+
+/// Wrap and filter settings (glTexParameteri), set when the texture is made.
+#[derive(Clone, Copy, Debug)]
+pub struct Sampling {
+    pub wrap: u32,
+    pub min_filter: u32,
+    pub mag_filter: u32,
+}
+
+impl Sampling {
+    /// Trilinear filtering (notes 01 §5.3.1) with repeat wrapping.
+    pub const TRILINEAR_REPEAT: Sampling = Sampling {
+        wrap: glow::REPEAT,
+        min_filter: glow::LINEAR_MIPMAP_LINEAR,
+        mag_filter: glow::LINEAR,
+    };
+    /// One texel per pixel: render targets read with texelFetch or at pixel centres.
+    pub const NEAREST_CLAMP: Sampling = Sampling {
+        wrap: glow::CLAMP_TO_EDGE,
+        min_filter: glow::NEAREST,
+        mag_filter: glow::NEAREST,
+    };
+}
+
+/// One GL_TEXTURE_2D.
+pub struct Texture {
+    gl: Gl,
+    pub id: glow::Texture,
+    pub width: i32,
+    pub height: i32,
+    pub internal_format: u32,
+}
+
+impl Texture {
+    /// An empty texture to render into (an FBO attachment).
+    pub fn render_target(gl: &Gl, width: i32, height: i32, internal_format: u32) -> Result<Texture> {
+        let (format, ty) = upload_format(internal_format)?;
+        unsafe {
+            let id = gl.create_texture().map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            gl.bind_texture(glow::TEXTURE_2D, Some(id));
+            gl.tex_image_2d(
+                glow::TEXTURE_2D,
+                0,
+                internal_format as i32,
+                width,
+                height,
+                0,
+                format,
+                ty,
+                PixelUnpackData::Slice(None),
+            );
+            set_sampling(gl, Sampling::NEAREST_CLAMP);
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            Ok(Texture {
+                gl: gl.clone(),
+                id,
+                width,
+                height,
+                internal_format,
+            })
+        }
+    }
+
+    /// An RGBA8 image from memory; `srgb` stores it as GL_SRGB8_ALPHA8 so that
+    /// sampling returns linear values (colour textures), otherwise GL_RGBA8
+    /// (data such as normal maps). Mipmaps are generated when the filter uses them.
+    pub fn from_rgba8(
+        gl: &Gl,
+        width: u32,
+        height: u32,
+        pixels: &[u8],
+        srgb: bool,
+        sampling: Sampling,
+    ) -> Result<Texture> {
+        if pixels.len() != (width * height * 4) as usize {
+            bail!("texture data is {} bytes, expected {width}x{height}x4", pixels.len());
+        }
+        let internal = if srgb { glow::SRGB8_ALPHA8 } else { glow::RGBA8 };
+        unsafe {
+            let id = gl.create_texture().map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            gl.bind_texture(glow::TEXTURE_2D, Some(id));
+            gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+            gl.tex_image_2d(
+                glow::TEXTURE_2D,
+                0,
+                internal as i32,
+                width as i32,
+                height as i32,
+                0,
+                glow::RGBA,
+                glow::UNSIGNED_BYTE,
+                PixelUnpackData::Slice(Some(pixels)),
+            );
+            gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 4);
+            set_sampling(gl, sampling);
+            if matches!(
+                sampling.min_filter,
+                glow::LINEAR_MIPMAP_LINEAR
+                    | glow::LINEAR_MIPMAP_NEAREST
+                    | glow::NEAREST_MIPMAP_LINEAR
+                    | glow::NEAREST_MIPMAP_NEAREST
+            ) {
+                gl.generate_mipmap(glow::TEXTURE_2D);
+            }
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            Ok(Texture {
+                gl: gl.clone(),
+                id,
+                width: width as i32,
+                height: height as i32,
+                internal_format: internal,
+            })
+        }
+    }
+
+    /// Load a PNG (through the `image` crate), flipped so that v = 0 is the bottom row as GL expects.
+    pub fn load(gl: &Gl, path: &Path, srgb: bool, sampling: Sampling) -> Result<Texture> {
+        let img = load_rgba8(path)?;
+        Texture::from_rgba8(gl, img.width(), img.height(), img.as_raw(), srgb, sampling)
+    }
+}
+
+/// Decode an image file to RGBA8 with v flipped for GL, refusing absurd sizes
+/// before decoding.
+pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
+    let reader = image::ImageReader::open(path)
+        .with_context(|| format!("cannot open texture {}", path.display()))?
+        .with_guessed_format()
+        .with_context(|| format!("cannot read texture {}", path.display()))?;
+    let (w, h) = reader
+        .into_dimensions()
+        .with_context(|| format!("texture {} is not a readable image", path.display()))?;
+    if w == 0 || h == 0 || w > MAX_TEXTURE_SIDE || h > MAX_TEXTURE_SIDE {
+        bail!(
+            "texture {} is {w}x{h}; gloss accepts 1..={MAX_TEXTURE_SIDE} pixels a side",
+            path.display()
+        );
+    }
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(MAX_TEXTURE_SIDE);
+    limits.max_image_height = Some(MAX_TEXTURE_SIDE);
+    let mut reader = image::ImageReader::open(path)?.with_guessed_format()?;
+    reader.limits(limits);
+    let img = reader
+        .decode()
+        .with_context(|| format!("texture {} is malformed", path.display()))?;
+    Ok(image::imageops::flip_vertical(&img.to_rgba8()))
+}
+
+/// glTexParameteri for wrap and filters on the bound GL_TEXTURE_2D.
+pub fn set_sampling(gl: &glow::Context, s: Sampling) {
+    unsafe {
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_WRAP_S, s.wrap as i32);
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_WRAP_T, s.wrap as i32);
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, s.min_filter as i32);
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, s.mag_filter as i32);
+    }
+}
+
+/// The (format, type) pair glTexImage2D wants for an internal format with no data.
+fn upload_format(internal: u32) -> Result<(u32, u32)> {
+    Ok(match internal {
+        glow::RGBA8 | glow::SRGB8_ALPHA8 => (glow::RGBA, glow::UNSIGNED_BYTE),
+        glow::RGBA16F | glow::RGBA32F | glow::RGB16F | glow::RGB32F | glow::R32F | glow::RG16F => {
+            (glow::RGBA, glow::FLOAT)
+        }
+        glow::DEPTH24_STENCIL8 => (glow::DEPTH_STENCIL, glow::UNSIGNED_INT_24_8),
+        glow::DEPTH32F_STENCIL8 => (glow::DEPTH_STENCIL, glow::FLOAT_32_UNSIGNED_INT_24_8_REV),
+        glow::DEPTH_COMPONENT24 | glow::DEPTH_COMPONENT32F => {
+            (glow::DEPTH_COMPONENT, glow::FLOAT)
+        }
+        other => bail!("no upload format known for internal format {other:#x}"),
+    })
+}
+
+impl Drop for Texture {
+    fn drop(&mut self) {
+        unsafe { self.gl.delete_texture(self.id) }
+    }
+}

@@ -1,0 +1,1 @@
+//! Window backend (being written).

@@ -1,0 +1,1 @@
+//! Notes 01 chapter 2: transformations (filled in below).

@@ -4,6 +4,19 @@
 //! `gl/` owns GL objects and contexts; each technique has a file named as the
 //! notes name it; `plan` decides which passes a scene's frame runs.
 
+pub mod attenuation;
+pub mod deferred;
+pub mod deferred_lighting;
+pub mod deferred_shading;
+pub mod forward;
+pub mod gbuffer;
 pub mod geometry;
 pub mod gl;
+pub mod image_compare;
+pub mod light_volumes;
+pub mod lighting;
 pub mod math;
+pub mod plan;
+pub mod renderer;
+pub mod report;
+pub mod scene;

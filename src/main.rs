@@ -1,1 +1,219 @@
-fn main() {}
+//! The `gloss` command line.
+
+use anyhow::{Context as _, Result, anyhow, bail};
+use clap::{Parser, Subcommand};
+use gloss::gl::{Backend, Headless, program::Sources};
+use gloss::renderer::Renderer;
+use gloss::scene::{RenderPath, Scene, Shading};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "gloss",
+    version,
+    about = "OpenGL 3.3 core reference renderer for a real-time graphics course"
+)]
+struct Cli {
+    /// egl | osmesa | window (default: window when a display exists, else egl)
+    #[arg(long, global = true, value_enum)]
+    backend: Option<Backend>,
+    /// GL debug output on; any GL error is fatal.
+    #[arg(long, global = true)]
+    debug: bool,
+    /// Demo: exit after this many frames (smoke tests).
+    #[arg(long)]
+    frames: Option<u32>,
+    /// Demo / default render: the scene (default scenes/default.toml).
+    scene: Option<PathBuf>,
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a scene headless to a PNG.
+    Render {
+        scene: PathBuf,
+        #[arg(short, long)]
+        output: PathBuf,
+        /// WIDTHxHEIGHT (default: the scene's render.size)
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+        /// Override the scene's render path.
+        #[arg(long, value_enum)]
+        path: Option<RenderPath>,
+        /// Override the scene's shading mode.
+        #[arg(long, value_enum)]
+        shading: Option<Shading>,
+        /// Number of generated lights (scenes with a [light_grid]).
+        #[arg(long)]
+        lights: Option<usize>,
+    },
+    /// Print GL_VERSION, GL_RENDERER, GLSL version, backend and context flags.
+    Info,
+    /// Print the passes and render targets a scene's frame uses.
+    Plan {
+        scene: PathBuf,
+        #[arg(long, value_enum)]
+        path: Option<RenderPath>,
+        #[arg(long)]
+        lights: Option<usize>,
+    },
+    /// Measure speed against error for render paths, light counts and cutoffs.
+    Bench,
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("expected WIDTHxHEIGHT, found \"{s}\""))?;
+    let w: u32 = w.parse().map_err(|_| format!("bad width in \"{s}\""))?;
+    let h: u32 = h.parse().map_err(|_| format!("bad height in \"{s}\""))?;
+    if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
+        return Err(format!("size {w}x{h}: each side must be 1..=8192"));
+    }
+    Ok((w, h))
+}
+
+fn main() -> ExitCode {
+    std::panic::set_hook(Box::new(|info| {
+        eprintln!(
+            "gloss: internal error: {info}\nplease report it with the command that caused it"
+        );
+    }));
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The default scene: scenes/default.toml here, or next to the sources gloss was built from.
+fn default_scene() -> PathBuf {
+    let local = PathBuf::from("scenes/default.toml");
+    if local.is_file() {
+        return local;
+    }
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/default.toml")
+}
+
+fn headless_backend(b: Option<Backend>) -> Result<Backend> {
+    match b {
+        None => Ok(Backend::Egl),
+        Some(Backend::Window) => {
+            bail!("this command renders headless: use --backend egl or osmesa")
+        }
+        Some(b) => Ok(b),
+    }
+}
+
+pub fn render_to_png(scene: &Scene, backend: Backend, debug: bool, out: &Path) -> Result<()> {
+    let ctx = Headless::new(backend, debug)?;
+    let (w, h) = scene.render.size;
+    let renderer = Renderer::new(
+        &ctx.gl,
+        &ctx.debug,
+        scene,
+        &Sources::Embedded,
+        w as i32,
+        h as i32,
+    );
+    let mut renderer = renderer?;
+    renderer.render(&scene.camera.clone())?;
+    let img = renderer.read_image();
+    drop(renderer);
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    }
+    // Write to a temporary name and rename, so a failed write never leaves half a file
+    // where the user's old picture was.
+    let tmp = out.with_extension("png.tmp");
+    img.save_with_format(&tmp, image::ImageFormat::Png)
+        .with_context(|| format!("cannot write {}", out.display()))?;
+    std::fs::rename(&tmp, out).with_context(|| format!("cannot write {}", out.display()))?;
+    Ok(())
+}
+
+fn load_scene(
+    path: &Path,
+    render_path: Option<RenderPath>,
+    lights: Option<usize>,
+) -> Result<Scene> {
+    let mut scene = Scene::load(path)?;
+    if let Some(p) = render_path {
+        scene.render.path = p;
+    }
+    if let Some(n) = lights {
+        scene.set_light_count(n)?;
+    }
+    Ok(scene)
+}
+
+fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        None => {
+            let scene_path = cli.scene.unwrap_or_else(default_scene);
+            let want_window = match cli.backend {
+                Some(Backend::Window) => true,
+                Some(_) => false,
+                None => gloss::gl::window::display_available(),
+            };
+            if want_window {
+                bail!("demo not yet")
+            } else {
+                let scene = Scene::load(&scene_path)?;
+                let out = std::env::current_dir()?.join(format!("gloss-{}.png", scene.name));
+                let backend = headless_backend(cli.backend)?;
+                render_to_png(&scene, backend, cli.debug, &out)?;
+                println!(
+                    "no display: rendered {} headless ({backend}) to {}",
+                    scene_path.display(),
+                    out.display()
+                );
+                Ok(())
+            }
+        }
+        Some(Command::Render {
+            scene,
+            output,
+            size,
+            path,
+            shading,
+            lights,
+        }) => {
+            let mut s = load_scene(&scene, path, lights)?;
+            if let Some(sh) = shading {
+                s.render.shading = sh;
+            }
+            if let Some(sz) = size {
+                s.render.size = sz;
+            }
+            render_to_png(&s, headless_backend(cli.backend)?, cli.debug, &output)?;
+            println!("wrote {}", output.display());
+            Ok(())
+        }
+        Some(Command::Info) => {
+            let backend = cli.backend.unwrap_or(Backend::Egl);
+            if backend == Backend::Window {
+                bail!("window info: not yet");
+            }
+            let ctx = Headless::new(backend, cli.debug)?;
+            println!("{}", ctx.info);
+            Ok(())
+        }
+        Some(Command::Plan {
+            scene,
+            path,
+            lights,
+        }) => {
+            let s = load_scene(&scene, path, lights)?;
+            print!("{}", gloss::plan::FramePlan::new(&s));
+            Ok(())
+        }
+        Some(Command::Bench) => Err(anyhow!("bench: not yet")),
+    }
+}

@@ -16,7 +16,9 @@ impl Buffer {
     /// Create a buffer of `size` bytes for `target`, contents undefined.
     pub fn new(gl: &Gl, target: u32, size: usize, usage: u32) -> Result<Buffer> {
         unsafe {
-            let id = gl.create_buffer().map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            let id = gl
+                .create_buffer()
+                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
             gl.bind_buffer(target, Some(id));
             gl.buffer_data_size(target, size as i32, usage);
             gl.bind_buffer(target, None);

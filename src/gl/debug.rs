@@ -62,7 +62,10 @@ impl DebugLog {
         }
         errors.append(&mut self.messages.lock().unwrap_or_else(|p| p.into_inner()));
         if !errors.is_empty() {
-            bail!("OpenGL reported errors during {what}:\n  {}", errors.join("\n  "));
+            bail!(
+                "OpenGL reported errors during {what}:\n  {}",
+                errors.join("\n  ")
+            );
         }
         Ok(())
     }

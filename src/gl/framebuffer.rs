@@ -14,6 +14,9 @@ pub struct Framebuffer {
     pub height: i32,
     pub colors: Vec<Texture>,
     pub depth_stencil: Option<Texture>,
+    /// A depth-stencil texture owned by another framebuffer and attached here
+    /// too (the light accumulation target tests against the G-buffer's depth).
+    pub shared_depth: Option<glow::Texture>,
     pub name: &'static str,
 }
 
@@ -38,7 +41,7 @@ impl Framebuffer {
             Some(f) => Some(Texture::render_target(gl, width, height, f)?),
             None => None,
         };
-        Self::with_attachments(gl, name, colors, depth_stencil)
+        Self::with_attachments(gl, name, colors, depth_stencil, None)
     }
 
     /// Wrap existing textures (e.g. share the G-buffer's depth with the lighting target).
@@ -47,6 +50,7 @@ impl Framebuffer {
         name: &'static str,
         colors: Vec<Texture>,
         depth_stencil: Option<Texture>,
+        shared_depth: Option<&Texture>,
     ) -> Result<Framebuffer> {
         let (width, height) = colors
             .first()
@@ -64,7 +68,7 @@ impl Framebuffer {
                 gl.framebuffer_texture_2d(glow::FRAMEBUFFER, at, glow::TEXTURE_2D, Some(t.id), 0);
                 draw.push(at);
             }
-            if let Some(d) = &depth_stencil {
+            if let Some(d) = depth_stencil.as_ref().or(shared_depth) {
                 let at = match d.internal_format {
                     glow::DEPTH24_STENCIL8 | glow::DEPTH32F_STENCIL8 => {
                         glow::DEPTH_STENCIL_ATTACHMENT
@@ -88,6 +92,7 @@ impl Framebuffer {
                 height,
                 colors,
                 depth_stencil,
+                shared_depth: shared_depth.map(|t| t.id),
                 name,
             };
             if status != glow::FRAMEBUFFER_COMPLETE {
@@ -105,7 +110,8 @@ impl Framebuffer {
         let n = (self.width * self.height * 4) as usize;
         let mut out = vec![0f32; n];
         unsafe {
-            self.gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.id));
+            self.gl
+                .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.id));
             self.gl.read_buffer(glow::COLOR_ATTACHMENT0 + index);
             self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
             self.gl.read_pixels(
@@ -127,7 +133,8 @@ impl Framebuffer {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut raw = vec![0u8; w * h * 4];
         unsafe {
-            self.gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.id));
+            self.gl
+                .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.id));
             self.gl.read_buffer(glow::COLOR_ATTACHMENT0 + index);
             self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
             self.gl.read_pixels(

@@ -21,12 +21,22 @@ impl Mesh {
         }
         let stride = std::mem::size_of::<Vertex>() as i32;
         unsafe {
-            let vao = gl.create_vertex_array().map_err(|e| anyhow!("glGenVertexArrays: {e}"))?;
-            let vbo = gl.create_buffer().map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            let ebo = gl.create_buffer().map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            let vao = gl
+                .create_vertex_array()
+                .map_err(|e| anyhow!("glGenVertexArrays: {e}"))?;
+            let vbo = gl
+                .create_buffer()
+                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            let ebo = gl
+                .create_buffer()
+                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
             gl.bind_vertex_array(Some(vao));
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
-            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&data.vertices), glow::STATIC_DRAW);
+            gl.buffer_data_u8_slice(
+                glow::ARRAY_BUFFER,
+                as_bytes(&data.vertices),
+                glow::STATIC_DRAW,
+            );
             gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
             gl.buffer_data_u8_slice(
                 glow::ELEMENT_ARRAY_BUFFER,

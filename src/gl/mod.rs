@@ -124,10 +124,18 @@ impl std::fmt::Display for GlInfo {
             "context        {}.{} {}{}",
             self.major,
             self.minor,
-            if self.core_profile { "core" } else { "compatibility" },
+            if self.core_profile {
+                "core"
+            } else {
+                "compatibility"
+            },
             if self.debug_context { ", debug" } else { "" }
         )?;
-        writeln!(f, "KHR_debug      {}", if self.khr_debug { "yes" } else { "no" })?;
+        writeln!(
+            f,
+            "KHR_debug      {}",
+            if self.khr_debug { "yes" } else { "no" }
+        )?;
         write!(f, "max UBO size   {} bytes", self.max_uniform_block_size)
     }
 }

@@ -46,7 +46,11 @@ impl Sources {
             Sources::Embedded => None,
             Sources::Directory(dir) => names
                 .iter()
-                .filter_map(|n| std::fs::metadata(dir.join(n)).and_then(|m| m.modified()).ok())
+                .filter_map(|n| {
+                    std::fs::metadata(dir.join(n))
+                        .and_then(|m| m.modified())
+                        .ok()
+                })
                 .max(),
         }
     }
@@ -75,7 +79,11 @@ pub struct Preprocessed {
 }
 
 /// Expand `#include "x"` and insert `defines` after `#version`.
-pub fn preprocess(sources: &Sources, name: &str, defines: &[(&str, String)]) -> Result<Preprocessed> {
+pub fn preprocess(
+    sources: &Sources,
+    name: &str,
+    defines: &[(&str, String)],
+) -> Result<Preprocessed> {
     let mut out = Preprocessed {
         text: String::new(),
         files: Vec::new(),
@@ -102,7 +110,10 @@ fn expand(
         if let Some(rest) = trimmed.strip_prefix("#include") {
             let inc = rest.trim().trim_matches('"');
             if inc.is_empty() {
-                bail!("glsl/{name}:{}: #include needs a file name in quotes", i + 1);
+                bail!(
+                    "glsl/{name}:{}: #include needs a file name in quotes",
+                    i + 1
+                );
             }
             expand(sources, inc, &[], out, depth + 1)?;
             out.text.push_str(&format!("#line {} {file_no}\n", i + 2));
@@ -164,12 +175,16 @@ impl Program {
     ) -> Result<Program> {
         let name = stages.iter().map(|s| s.1).collect::<Vec<_>>().join(" + ");
         unsafe {
-            let program = gl.create_program().map_err(|e| anyhow!("glCreateProgram: {e}"))?;
+            let program = gl
+                .create_program()
+                .map_err(|e| anyhow!("glCreateProgram: {e}"))?;
             let mut shaders = Vec::new();
             let result = (|| {
                 for &(kind, file) in stages {
                     let pre = preprocess(sources, file, defines)?;
-                    let sh = gl.create_shader(kind).map_err(|e| anyhow!("glCreateShader: {e}"))?;
+                    let sh = gl
+                        .create_shader(kind)
+                        .map_err(|e| anyhow!("glCreateShader: {e}"))?;
                     shaders.push(sh);
                     gl.shader_source(sh, &pre.text);
                     gl.compile_shader(sh);
@@ -218,7 +233,9 @@ impl Program {
             return l.clone();
         }
         let l = unsafe { self.gl.get_uniform_location(self.id, name) };
-        self.locations.borrow_mut().insert(name.to_owned(), l.clone());
+        self.locations
+            .borrow_mut()
+            .insert(name.to_owned(), l.clone());
         l
     }
 
@@ -237,10 +254,16 @@ impl Program {
         }
     }
     pub fn set_vec4(&self, name: &str, v: glam::Vec4) {
-        unsafe { self.gl.uniform_4_f32(self.loc(name).as_ref(), v.x, v.y, v.z, v.w) }
+        unsafe {
+            self.gl
+                .uniform_4_f32(self.loc(name).as_ref(), v.x, v.y, v.z, v.w)
+        }
     }
     pub fn set_vec3(&self, name: &str, v: glam::Vec3) {
-        unsafe { self.gl.uniform_3_f32(self.loc(name).as_ref(), v.x, v.y, v.z) }
+        unsafe {
+            self.gl
+                .uniform_3_f32(self.loc(name).as_ref(), v.x, v.y, v.z)
+        }
     }
     pub fn set_vec2(&self, name: &str, v: glam::Vec2) {
         unsafe { self.gl.uniform_2_f32(self.loc(name).as_ref(), v.x, v.y) }

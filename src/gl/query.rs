@@ -30,10 +30,7 @@ impl TimerQuery {
 
     /// Wait for the result; nanoseconds.
     pub fn result_ns(&self) -> u64 {
-        unsafe {
-            self.gl
-                .get_query_parameter_u64(self.id, glow::QUERY_RESULT)
-        }
+        unsafe { self.gl.get_query_parameter_u64(self.id, glow::QUERY_RESULT) }
     }
 }
 

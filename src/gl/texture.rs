@@ -43,10 +43,17 @@ pub struct Texture {
 
 impl Texture {
     /// An empty texture to render into (an FBO attachment).
-    pub fn render_target(gl: &Gl, width: i32, height: i32, internal_format: u32) -> Result<Texture> {
+    pub fn render_target(
+        gl: &Gl,
+        width: i32,
+        height: i32,
+        internal_format: u32,
+    ) -> Result<Texture> {
         let (format, ty) = upload_format(internal_format)?;
         unsafe {
-            let id = gl.create_texture().map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            let id = gl
+                .create_texture()
+                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
             gl.bind_texture(glow::TEXTURE_2D, Some(id));
             gl.tex_image_2d(
                 glow::TEXTURE_2D,
@@ -83,11 +90,20 @@ impl Texture {
         sampling: Sampling,
     ) -> Result<Texture> {
         if pixels.len() != (width * height * 4) as usize {
-            bail!("texture data is {} bytes, expected {width}x{height}x4", pixels.len());
+            bail!(
+                "texture data is {} bytes, expected {width}x{height}x4",
+                pixels.len()
+            );
         }
-        let internal = if srgb { glow::SRGB8_ALPHA8 } else { glow::RGBA8 };
+        let internal = if srgb {
+            glow::SRGB8_ALPHA8
+        } else {
+            glow::RGBA8
+        };
         unsafe {
-            let id = gl.create_texture().map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            let id = gl
+                .create_texture()
+                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
             gl.bind_texture(glow::TEXTURE_2D, Some(id));
             gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
             gl.tex_image_2d(
@@ -162,8 +178,16 @@ pub fn set_sampling(gl: &glow::Context, s: Sampling) {
     unsafe {
         gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_WRAP_S, s.wrap as i32);
         gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_WRAP_T, s.wrap as i32);
-        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, s.min_filter as i32);
-        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, s.mag_filter as i32);
+        gl.tex_parameter_i32(
+            glow::TEXTURE_2D,
+            glow::TEXTURE_MIN_FILTER,
+            s.min_filter as i32,
+        );
+        gl.tex_parameter_i32(
+            glow::TEXTURE_2D,
+            glow::TEXTURE_MAG_FILTER,
+            s.mag_filter as i32,
+        );
     }
 }
 
@@ -176,9 +200,7 @@ fn upload_format(internal: u32) -> Result<(u32, u32)> {
         }
         glow::DEPTH24_STENCIL8 => (glow::DEPTH_STENCIL, glow::UNSIGNED_INT_24_8),
         glow::DEPTH32F_STENCIL8 => (glow::DEPTH_STENCIL, glow::FLOAT_32_UNSIGNED_INT_24_8_REV),
-        glow::DEPTH_COMPONENT24 | glow::DEPTH_COMPONENT32F => {
-            (glow::DEPTH_COMPONENT, glow::FLOAT)
-        }
+        glow::DEPTH_COMPONENT24 | glow::DEPTH_COMPONENT32F => (glow::DEPTH_COMPONENT, glow::FLOAT),
         other => bail!("no upload format known for internal format {other:#x}"),
     })
 }

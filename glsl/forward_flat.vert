@@ -1,0 +1,12 @@
+#version 330 core
+// Flat shading (notes 01 §8.2): the vertex shader only moves vertices to
+// world space; the geometry shader lights each triangle once.
+layout(location = 0) in vec3 a_position;
+layout(location = 2) in vec2 a_uv;
+uniform mat4 u_model;
+out vec3 g_position;
+out vec2 g_uv;
+void main() {
+    g_position = (u_model * vec4(a_position, 1.0)).xyz;
+    g_uv = a_uv;
+}

@@ -1,0 +1,24 @@
+#version 330 core
+// G-buffer pass (notes 01 §8.6.2 step 1): transform as usual, pass world data on.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+
+uniform mat4 u_model;
+uniform mat4 u_view_projection;
+uniform mat3 u_normal_matrix;
+
+out vec3 v_position;
+out vec3 v_normal;
+out vec2 v_uv;
+// The light pre-pass draws the scene twice and tests depth for equality:
+// both vertex shaders must compute exactly the same gl_Position.
+invariant gl_Position;
+
+void main() {
+    vec4 world = u_model * vec4(a_position, 1.0);
+    v_position = world.xyz;
+    v_normal = u_normal_matrix * a_normal;
+    v_uv = a_uv;
+    gl_Position = u_view_projection * world;
+}

@@ -1,0 +1,68 @@
+// Shared lighting: the Phong reflection model of notes 01 §8.3 with the
+// Kc/Kl/Kq attenuation of notes 04, Blinn's half vector for the specular term.
+//
+//   c   = c_a + sum over lights of  att * spot * I * (c_d + c_s)
+//   c_d = max(N . L, 0) * k_d
+//   c_s = max(N . H, 0)^n * k_s,  H = normalize(L + V)   (the notes' 1/2 (V + L)
+//                                 is not unit length; normalise instead)
+//   att = 1 / (Kc + Kl d + Kq d^2)
+//
+// Every vector is in world space; L points from the surface to the light.
+// src/lighting.rs evaluates the same formula on the CPU for the tests.
+
+#define LIGHT_DIRECTIONAL 0
+#define LIGHT_POINT 1
+#define LIGHT_SPOT 2
+
+// std140, 64 bytes a light (src/lighting.rs writes this layout).
+struct Light {
+    vec4 position_type;    // xyz position, w type
+    vec4 direction_radius; // xyz unit direction the light shines in, w volume radius (< 0: none)
+    vec4 color_cos_outer;  // rgb colour x intensity, w cos(outer angle)
+    vec4 atten_cos_inner;  // Kc, Kl, Kq, cos(inner angle)
+};
+
+layout(std140) uniform Lights {
+    Light u_lights[MAX_LIGHTS];
+};
+
+// The light's irradiance factors at P: returns the direction to the light in
+// L and the scalar att * spot factor.
+float light_factor(Light light, vec3 P, out vec3 L) {
+    int type = int(light.position_type.w);
+    if (type == LIGHT_DIRECTIONAL) {
+        L = -light.direction_radius.xyz;
+        return 1.0;
+    }
+    vec3 to_light = light.position_type.xyz - P;
+    float d = length(to_light);
+    L = to_light / max(d, 1e-20);
+    vec3 k = light.atten_cos_inner.xyz;
+    float att = 1.0 / (k.x + k.y * d + k.z * d * d);
+    if (type == LIGHT_SPOT) {
+        float c = dot(-L, light.direction_radius.xyz);
+        float cos_outer = light.color_cos_outer.w;
+        float cos_inner = light.atten_cos_inner.w;
+        att *= smoothstep(cos_outer, cos_inner, c);
+    }
+    return att;
+}
+
+// Diffuse and specular light (not yet multiplied by the material) from one light.
+void phong_light(Light light, vec3 P, vec3 N, vec3 V, float shininess,
+                 out vec3 diffuse, out vec3 specular) {
+    vec3 L;
+    float f = light_factor(light, P, L);
+    vec3 I = light.color_cos_outer.rgb * f;
+    float n_dot_l = max(dot(N, L), 0.0);
+    vec3 H = normalize(L + V);
+    float s = n_dot_l > 0.0 ? pow(max(dot(N, H), 0.0), shininess) : 0.0;
+    diffuse = I * n_dot_l;
+    specular = I * s;
+}
+
+vec3 phong(Light light, vec3 P, vec3 N, vec3 V, vec3 kd, vec3 ks, float shininess) {
+    vec3 d, s;
+    phong_light(light, P, N, V, shininess, d, s);
+    return kd * d + ks * s;
+}

@@ -1,0 +1,544 @@
+//! Image metrics and golden-image checks.
+//!
+//! All metrics are in `0..1` units per channel (8-bit values divided by 255)
+//! and look at RGB only; alpha is ignored.
+//!
+//! Golden images live as PNGs; regenerate them with
+//! `GLOSS_UPDATE_GOLDEN=1 cargo test --release --lib <filter>` and review the
+//! changed files before committing them.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, bail};
+use image::{Rgba, RgbaImage};
+
+/// Environment variable that makes [`check_golden`] (re)write golden images
+/// instead of comparing against them.
+pub const UPDATE_GOLDEN_ENV: &str = "GLOSS_UPDATE_GOLDEN";
+
+/// How much two images differ, in `0..1` units per channel, over RGB.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Metrics {
+    /// Root-mean-square difference over every RGB channel of every pixel.
+    pub rmse: f64,
+    /// Largest absolute difference of any RGB channel of any pixel.
+    pub max_abs: f64,
+    /// Fraction (`0..=1`) of pixels where any RGB channel differs by more than
+    /// `over_threshold`.
+    pub frac_over: f64,
+    /// The threshold `frac_over` was counted against.
+    pub over_threshold: f64,
+}
+
+impl Metrics {
+    /// Metrics of identical images.
+    pub fn identical(threshold: f64) -> Self {
+        Self {
+            rmse: 0.0,
+            max_abs: 0.0,
+            frac_over: 0.0,
+            over_threshold: threshold,
+        }
+    }
+
+    /// Metrics of images that cannot be compared (different sizes): every
+    /// pixel counts as different, infinitely far off.
+    pub fn incomparable(threshold: f64) -> Self {
+        Self {
+            rmse: f64::INFINITY,
+            max_abs: f64::INFINITY,
+            frac_over: 1.0,
+            over_threshold: threshold,
+        }
+    }
+}
+
+impl fmt::Display for Metrics {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "RMSE {:.3}/255, max abs {:.1}/255, {:.3}% of pixels differ by more than {}/255",
+            self.rmse * 255.0,
+            self.max_abs * 255.0,
+            self.frac_over * 100.0,
+            fmt_steps(self.over_threshold * 255.0),
+        )
+    }
+}
+
+/// Accumulates per-pixel RGB differences.
+struct Acc {
+    sum_sq: f64,
+    max_abs: f64,
+    over: u64,
+    pixels: u64,
+    channels: u64,
+    threshold: f64,
+}
+
+impl Acc {
+    fn new(threshold: f64) -> Self {
+        Self {
+            sum_sq: 0.0,
+            max_abs: 0.0,
+            over: 0,
+            pixels: 0,
+            channels: 0,
+            threshold,
+        }
+    }
+
+    fn pixel(&mut self, diffs: impl IntoIterator<Item = f64>) {
+        let mut any_over = false;
+        for d in diffs {
+            self.sum_sq += d * d;
+            self.max_abs = self.max_abs.max(d);
+            self.channels += 1;
+            // `!(d <= t)` so that a NaN threshold counts everything as over.
+            any_over |= !(d <= self.threshold);
+        }
+        self.pixels += 1;
+        self.over += u64::from(any_over);
+    }
+
+    fn finish(self) -> Metrics {
+        if self.pixels == 0 || self.channels == 0 {
+            return Metrics::identical(self.threshold);
+        }
+        Metrics {
+            rmse: (self.sum_sq / self.channels as f64).sqrt(),
+            max_abs: self.max_abs,
+            frac_over: self.over as f64 / self.pixels as f64,
+            over_threshold: self.threshold,
+        }
+    }
+}
+
+/// Compares two 8-bit RGBA images over RGB. `threshold` is in `0..1` units
+/// (use `2.0 / 255.0` for "two 8-bit steps"). Errors if the sizes differ.
+pub fn compare_rgba8(a: &RgbaImage, b: &RgbaImage, threshold: f64) -> anyhow::Result<Metrics> {
+    if a.dimensions() != b.dimensions() {
+        bail!(
+            "cannot compare images of different sizes: {}x{} vs {}x{}",
+            a.width(),
+            a.height(),
+            b.width(),
+            b.height()
+        );
+    }
+    let mut acc = Acc::new(threshold);
+    for (pa, pb) in a.pixels().zip(b.pixels()) {
+        acc.pixel((0..3).map(|c| f64::from(pa[c].abs_diff(pb[c])) / 255.0));
+    }
+    Ok(acc.finish())
+}
+
+/// Compares two linear float images stored as interleaved pixels of
+/// `channels` floats (normally RGBA, `channels = 4`); only the first three
+/// channels (RGB) count, so alpha is ignored.
+///
+/// Two equal values (including equal infinities) differ by 0; a NaN against
+/// anything but NaN differs by `+inf`. If the buffers cannot be compared
+/// (`channels == 0`, different lengths, or a length that is not a multiple of
+/// `channels`) the result is [`Metrics::incomparable`].
+pub fn compare_f32(a: &[f32], b: &[f32], channels: usize, threshold: f64) -> Metrics {
+    if channels == 0 || a.len() != b.len() || !a.len().is_multiple_of(channels) {
+        return Metrics::incomparable(threshold);
+    }
+    let rgb = channels.min(3);
+    let mut acc = Acc::new(threshold);
+    for (pa, pb) in a.chunks_exact(channels).zip(b.chunks_exact(channels)) {
+        acc.pixel(pa[..rgb].iter().zip(&pb[..rgb]).map(|(&x, &y)| {
+            let (x, y) = (f64::from(x), f64::from(y));
+            if x == y || (x.is_nan() && y.is_nan()) {
+                0.0
+            } else {
+                let d = (x - y).abs();
+                if d.is_nan() { f64::INFINITY } else { d }
+            }
+        }));
+    }
+    acc.finish()
+}
+
+/// Colour of pixels that exist in only one of the images passed to
+/// [`diff_image`].
+pub const DIFF_MISSING: Rgba<u8> = Rgba([255, 0, 255, 255]);
+
+/// Per-pixel `|a - b|` of RGB, amplified 8x and clamped, with alpha 255, so
+/// that differences of a step or two are visible.
+///
+/// If the sizes differ the result covers both images and pixels that exist in
+/// only one of them are [`DIFF_MISSING`] (magenta).
+pub fn diff_image(a: &RgbaImage, b: &RgbaImage) -> RgbaImage {
+    let (w, h) = (a.width().max(b.width()), a.height().max(b.height()));
+    RgbaImage::from_fn(w, h, |x, y| {
+        match (a.get_pixel_checked(x, y), b.get_pixel_checked(x, y)) {
+            (Some(pa), Some(pb)) => {
+                let ch = |c: usize| pa[c].abs_diff(pb[c]).saturating_mul(8);
+                Rgba([ch(0), ch(1), ch(2), 255])
+            }
+            _ => DIFF_MISSING,
+        }
+    })
+}
+
+/// How far an image may be from its golden image.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tolerance {
+    /// Per-channel difference (`0..1` units) above which a pixel counts as
+    /// differing.
+    pub threshold: f64,
+    /// Largest allowed fraction (`0..=1`) of differing pixels.
+    pub max_frac_over: f64,
+    /// If set, no channel of any pixel may differ by more than this.
+    pub max_abs: Option<f64>,
+}
+
+impl Tolerance {
+    /// Whether `m` (computed with this tolerance's threshold) is within it.
+    /// NaN metrics never pass.
+    pub fn accepts(&self, m: &Metrics) -> bool {
+        m.frac_over <= self.max_frac_over && self.max_abs.is_none_or(|t| m.max_abs <= t)
+    }
+}
+
+impl fmt::Display for Tolerance {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "at most {:.2}% of pixels differ by more than {}/255 in any channel",
+            self.max_frac_over * 100.0,
+            fmt_steps(self.threshold * 255.0)
+        )?;
+        if let Some(m) = self.max_abs {
+            write!(
+                f,
+                ", and no channel differs by more than {}/255",
+                fmt_steps(m * 255.0)
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// An 8-bit step count: "2" for 2.0, "2.5" for 2.5.
+fn fmt_steps(v: f64) -> String {
+    if (v - v.round()).abs() < 1e-6 {
+        format!("{}", v.round())
+    } else {
+        format!("{v:.2}")
+    }
+}
+
+/// Keeps `[A-Za-z0-9_.-]` and replaces everything else with `_`, so that a
+/// test name cannot escape `out_dir`.
+fn file_stem(name: &str) -> String {
+    let s: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.') {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    let s = s.trim_start_matches('.');
+    if s.is_empty() {
+        "image".to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+fn save_png(img: &RgbaImage, path: &Path) -> anyhow::Result<()> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("creating directory {}", dir.display()))?;
+    }
+    img.save_with_format(path, image::ImageFormat::Png)
+        .with_context(|| format!("writing {}", path.display()))
+}
+
+/// Checks `actual` against the PNG at `golden_path`.
+///
+/// - With `GLOSS_UPDATE_GOLDEN=1` in the environment, writes `actual` to
+///   `golden_path` (creating directories) and returns identical metrics.
+/// - If the golden file is missing, errors and says how to create it.
+/// - Otherwise compares over RGB with `tol.threshold`; if the images differ
+///   in size or are outside `tol`, writes `<out_dir>/<name>.actual.png`,
+///   `.expected.png` and `.diff.png` (see [`diff_image`]) and returns an
+///   error naming the metrics, the tolerance and the three paths.
+pub fn check_golden(
+    name: &str,
+    actual: &RgbaImage,
+    golden_path: &Path,
+    out_dir: &Path,
+    tol: &Tolerance,
+) -> anyhow::Result<Metrics> {
+    let update = std::env::var(UPDATE_GOLDEN_ENV).is_ok_and(|v| v == "1");
+    check_golden_impl(name, actual, golden_path, out_dir, tol, update)
+}
+
+fn check_golden_impl(
+    name: &str,
+    actual: &RgbaImage,
+    golden_path: &Path,
+    out_dir: &Path,
+    tol: &Tolerance,
+    update: bool,
+) -> anyhow::Result<Metrics> {
+    if update {
+        save_png(actual, golden_path)
+            .with_context(|| format!("updating golden image for {name}"))?;
+        return Ok(Metrics::identical(tol.threshold));
+    }
+    if !golden_path.exists() {
+        bail!(
+            "golden image for {name} is missing: {}\n\
+             create it by running the test with {UPDATE_GOLDEN_ENV}=1, e.g.\n  \
+             {UPDATE_GOLDEN_ENV}=1 cargo test --release --lib {name}\n\
+             and check the new image before committing it",
+            golden_path.display()
+        );
+    }
+    let expected = image::open(golden_path)
+        .with_context(|| format!("reading golden image {}", golden_path.display()))?
+        .to_rgba8();
+
+    let (metrics, size_note) = if expected.dimensions() == actual.dimensions() {
+        (compare_rgba8(actual, &expected, tol.threshold)?, None)
+    } else {
+        (
+            Metrics::incomparable(tol.threshold),
+            Some(format!(
+                "size differs: actual {}x{}, expected {}x{}\n",
+                actual.width(),
+                actual.height(),
+                expected.width(),
+                expected.height()
+            )),
+        )
+    };
+    if size_note.is_none() && tol.accepts(&metrics) {
+        return Ok(metrics);
+    }
+
+    let stem = file_stem(name);
+    let paths: [PathBuf; 3] = [
+        out_dir.join(format!("{stem}.actual.png")),
+        out_dir.join(format!("{stem}.expected.png")),
+        out_dir.join(format!("{stem}.diff.png")),
+    ];
+    save_png(actual, &paths[0])?;
+    save_png(&expected, &paths[1])?;
+    save_png(&diff_image(actual, &expected), &paths[2])?;
+    bail!(
+        "{name} does not match its golden image {}\n\
+         {}got:      {metrics}\n\
+         allowed:  {tol}\n\
+         actual:   {}\n\
+         expected: {}\n\
+         diff x8:  {}",
+        golden_path.display(),
+        size_note.unwrap_or_default(),
+        paths[0].display(),
+        paths[1].display(),
+        paths[2].display()
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn solid(w: u32, h: u32, c: [u8; 4]) -> RgbaImage {
+        RgbaImage::from_pixel(w, h, Rgba(c))
+    }
+
+    fn temp_dir(tag: &str) -> PathBuf {
+        let d =
+            std::env::temp_dir().join(format!("gloss-image-compare-{tag}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        d
+    }
+
+    const TOL: Tolerance = Tolerance {
+        threshold: 2.0 / 255.0,
+        max_frac_over: 0.001,
+        max_abs: None,
+    };
+
+    #[test]
+    fn rgba8_metrics_on_hand_made_images() {
+        // 2x2: one pixel off by 10 in red, one off by 1 in green and blue,
+        // alpha differs everywhere (ignored).
+        let a = solid(2, 2, [100, 100, 100, 255]);
+        let mut b = solid(2, 2, [100, 100, 100, 0]);
+        b.put_pixel(0, 0, Rgba([110, 100, 100, 0]));
+        b.put_pixel(1, 1, Rgba([100, 101, 99, 0]));
+        let m = compare_rgba8(&a, &b, 2.0 / 255.0).unwrap();
+        let expect_rmse = ((100.0 + 1.0 + 1.0) / 12.0f64).sqrt() / 255.0;
+        assert!((m.rmse - expect_rmse).abs() < 1e-12, "{m:?}");
+        assert!((m.max_abs - 10.0 / 255.0).abs() < 1e-12);
+        assert_eq!(m.frac_over, 0.25);
+        assert_eq!(m.over_threshold, 2.0 / 255.0);
+        // With threshold 0 both changed pixels count.
+        assert_eq!(compare_rgba8(&a, &b, 0.0).unwrap().frac_over, 0.5);
+        // Identical images.
+        assert_eq!(compare_rgba8(&a, &a, 0.0).unwrap(), Metrics::identical(0.0));
+        // Empty images compare equal.
+        let e = RgbaImage::new(0, 0);
+        assert_eq!(compare_rgba8(&e, &e, 0.0).unwrap().rmse, 0.0);
+    }
+
+    #[test]
+    fn rgba8_size_mismatch_is_an_error() {
+        let e = compare_rgba8(&solid(2, 2, [0; 4]), &solid(3, 2, [0; 4]), 0.0).unwrap_err();
+        assert!(e.to_string().contains("2x2 vs 3x2"), "{e}");
+    }
+
+    #[test]
+    fn f32_metrics_ignore_alpha_and_handle_bad_input() {
+        let a = [0.5f32, 0.5, 0.5, 1.0, 0.0, 0.0, 0.0, 1.0];
+        let b = [0.5f32, 0.75, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let m = compare_f32(&a, &b, 4, 0.1);
+        assert!((m.rmse - (0.0625f64 / 6.0).sqrt()).abs() < 1e-12, "{m:?}");
+        assert_eq!(m.max_abs, 0.25);
+        assert_eq!(m.frac_over, 0.5);
+        // NaN against a number is infinitely far; NaN against NaN is equal.
+        let m = compare_f32(&[f32::NAN, 0.0, 0.0, 1.0], &[0.0, 0.0, 0.0, 1.0], 4, 0.1);
+        assert_eq!(m.max_abs, f64::INFINITY);
+        assert_eq!(m.frac_over, 1.0);
+        let m = compare_f32(
+            &[f32::NAN, f32::INFINITY, 0.0],
+            &[f32::NAN, f32::INFINITY, 0.0],
+            3,
+            0.0,
+        );
+        assert_eq!(m, Metrics::identical(0.0));
+        // Incomparable buffers.
+        assert_eq!(compare_f32(&a, &b[..4], 4, 0.1), Metrics::incomparable(0.1));
+        assert_eq!(compare_f32(&a, &b, 0, 0.1), Metrics::incomparable(0.1));
+        assert_eq!(
+            compare_f32(&a[..6], &b[..6], 4, 0.1),
+            Metrics::incomparable(0.1)
+        );
+        assert_eq!(compare_f32(&[], &[], 4, 0.1), Metrics::identical(0.1));
+    }
+
+    #[test]
+    fn diff_image_amplifies_and_marks_missing() {
+        let a = solid(2, 1, [10, 200, 0, 255]);
+        let mut b = solid(3, 1, [12, 100, 0, 7]);
+        b.put_pixel(1, 0, Rgba([10, 200, 0, 0]));
+        let d = diff_image(&a, &b);
+        assert_eq!(d.dimensions(), (3, 1));
+        assert_eq!(d.get_pixel(0, 0), &Rgba([16, 255, 0, 255]));
+        assert_eq!(d.get_pixel(1, 0), &Rgba([0, 0, 0, 255]));
+        assert_eq!(d.get_pixel(2, 0), &DIFF_MISSING);
+    }
+
+    #[test]
+    fn tolerance_states_itself_in_words() {
+        assert_eq!(
+            TOL.to_string(),
+            "at most 0.10% of pixels differ by more than 2/255 in any channel"
+        );
+        let t = Tolerance {
+            threshold: 1.5 / 255.0,
+            max_frac_over: 0.0,
+            max_abs: Some(8.0 / 255.0),
+        };
+        assert_eq!(
+            t.to_string(),
+            "at most 0.00% of pixels differ by more than 1.50/255 in any channel, \
+             and no channel differs by more than 8/255"
+        );
+        assert!(!t.accepts(&Metrics {
+            max_abs: 9.0 / 255.0,
+            ..Metrics::identical(t.threshold)
+        }));
+        assert!(!t.accepts(&Metrics {
+            frac_over: f64::NAN,
+            ..Metrics::identical(t.threshold)
+        }));
+    }
+
+    #[test]
+    fn golden_missing_says_how_to_create_it() {
+        let dir = temp_dir("missing");
+        let golden = dir.join("nope.png");
+        let e = check_golden_impl("nope", &solid(2, 2, [0; 4]), &golden, &dir, &TOL, false)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("GLOSS_UPDATE_GOLDEN=1 cargo test"), "{e}");
+        assert!(e.contains(&golden.display().to_string()), "{e}");
+    }
+
+    #[test]
+    fn golden_update_then_pass() {
+        let dir = temp_dir("update");
+        let golden = dir.join("golden").join("g.png");
+        let img = solid(4, 3, [1, 2, 3, 255]);
+        check_golden_impl("g", &img, &golden, &dir, &TOL, true).unwrap();
+        assert!(golden.exists());
+        let m = check_golden_impl("g", &img, &golden, &dir, &TOL, false).unwrap();
+        assert_eq!(m.rmse, 0.0);
+        // A 1-step difference everywhere is under the 2/255 threshold.
+        let near = solid(4, 3, [2, 3, 4, 255]);
+        check_golden_impl("g", &near, &golden, &dir, &TOL, false).unwrap();
+        assert!(!dir.join("g.actual.png").exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn golden_failure_writes_files_and_names_them() {
+        let dir = temp_dir("fail");
+        let golden = dir.join("f.png");
+        let expected = solid(4, 4, [50, 50, 50, 255]);
+        save_png(&expected, &golden).unwrap();
+        let mut actual = expected.clone();
+        actual.put_pixel(1, 2, Rgba([60, 50, 50, 255]));
+        let out = dir.join("out");
+        let e = check_golden_impl("scene/f", &actual, &golden, &out, &TOL, false)
+            .unwrap_err()
+            .to_string();
+        let stems = ["actual", "expected", "diff"];
+        for s in stems {
+            let p = out.join(format!("scene_f.{s}.png"));
+            assert!(p.exists(), "{} missing", p.display());
+            assert!(e.contains(&p.display().to_string()), "{e}");
+        }
+        assert!(e.contains("6.250% of pixels"), "{e}");
+        assert!(e.contains(&TOL.to_string()), "{e}");
+        let diff = image::open(out.join("scene_f.diff.png"))
+            .unwrap()
+            .to_rgba8();
+        assert_eq!(diff.get_pixel(1, 2), &Rgba([80, 0, 0, 255]));
+        assert_eq!(
+            image::open(out.join("scene_f.actual.png"))
+                .unwrap()
+                .to_rgba8(),
+            actual
+        );
+
+        // A different size fails the same way, with a note.
+        let small = solid(2, 2, [50, 50, 50, 255]);
+        let e = check_golden_impl("small", &small, &golden, &out, &TOL, false)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("actual 2x2, expected 4x4"), "{e}");
+        assert!(out.join("small.diff.png").exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn file_stem_stays_in_out_dir() {
+        assert_eq!(file_stem("../../etc/passwd"), "_.._etc_passwd");
+        assert_eq!(file_stem(""), "image");
+        assert_eq!(file_stem("a b"), "a_b");
+    }
+}

@@ -1,0 +1,230 @@
+//! Writes the small committed assets next to this file:
+//!
+//! * `checker.png`: 256x256 sRGB albedo checkerboard (8x8 squares);
+//! * `bricks.png`: 256x256 procedural brick albedo (running bond, mortar);
+//! * `knot.obj`: a (2, 3) torus knot tube, 3072 triangles, with normals and uvs;
+//! * `rock.obj`: a low-poly displaced icosphere, uvs but NO normals, so that
+//!   loading it exercises `geometry::compute_normals`.
+//!
+//! Run with `cargo run --release --example gen_assets`. Output is deterministic.
+
+use anyhow::{Context, Result};
+use glam::{Vec2, Vec3};
+use gloss::geometry::{self, MeshData, Vertex};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+fn main() -> Result<()> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/assets");
+    write_png(&dir.join("checker.png"), checker())?;
+    write_png(&dir.join("bricks.png"), bricks())?;
+    write_obj(
+        &dir.join("knot.obj"),
+        &torus_knot(2, 3, 128, 12),
+        true,
+        "torus knot (2, 3)",
+    )?;
+    write_obj(
+        &dir.join("rock.obj"),
+        &rock(),
+        false,
+        "displaced icosphere, no normals",
+    )?;
+    Ok(())
+}
+
+fn write_png(path: &Path, img: image::RgbImage) -> Result<()> {
+    img.save(path)
+        .with_context(|| format!("writing {}", path.display()))?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
+
+/// A small integer hash mapped to 0..1 (deterministic "noise").
+fn hash(mut x: u32) -> f32 {
+    x ^= x >> 16;
+    x = x.wrapping_mul(0x7feb_352d);
+    x ^= x >> 15;
+    x = x.wrapping_mul(0x846c_a68b);
+    x ^= x >> 16;
+    (x >> 8) as f32 / (1u32 << 24) as f32
+}
+
+fn hash2(a: u32, b: u32) -> f32 {
+    hash(a.wrapping_mul(0x9e37_79b9) ^ b.wrapping_add(0x632b_e5ab))
+}
+
+fn checker() -> image::RgbImage {
+    let cream = [236, 224, 197];
+    let teal = [52, 110, 122];
+    image::RgbImage::from_fn(256, 256, |x, y| {
+        image::Rgb(if (x / 32 + y / 32) % 2 == 0 {
+            cream
+        } else {
+            teal
+        })
+    })
+}
+
+fn bricks() -> image::RgbImage {
+    const BRICK_W: u32 = 64;
+    const BRICK_H: u32 = 32;
+    const MORTAR: u32 = 3;
+    image::RgbImage::from_fn(256, 256, |x, y| {
+        let row = y / BRICK_H;
+        // Running bond: every other row shifted by half a brick (wraps, so
+        // the texture tiles).
+        let xs = (x + (row % 2) * BRICK_W / 2) % 256;
+        let col = xs / BRICK_W;
+        let (bx, by) = (xs % BRICK_W, y % BRICK_H);
+        let grain = hash2(x, y);
+        let colour = if bx < MORTAR || by < MORTAR {
+            let g = 170.0 + 25.0 * grain;
+            [g, g * 0.97, g * 0.9]
+        } else {
+            // Each brick its own shade of red-brown, darker toward the edges.
+            let tone = hash2(col + 17, row + 91);
+            let edge =
+                (bx.min(BRICK_W - 1 - bx).min(by.min(BRICK_H - 1 - by)) as f32 / 4.0).min(1.0);
+            let k = (0.8 + 0.2 * edge) * (0.9 + 0.15 * grain);
+            [
+                (150.0 + 50.0 * tone) * k,
+                (62.0 + 25.0 * tone) * k,
+                (45.0 + 15.0 * tone) * k,
+            ]
+        };
+        image::Rgb(colour.map(|c| c.clamp(0.0, 255.0) as u8))
+    })
+}
+
+/// A tube of radius 0.18 around the (p, q) torus knot on a torus of radii 1
+/// and 0.45, `rings` segments along the curve and `sides` around the tube.
+/// u runs along the curve (0..8, so textures tile along it), v around the
+/// tube; counter-clockwise seen from outside.
+fn torus_knot(p: u32, q: u32, rings: u32, sides: u32) -> MeshData {
+    let (p, q) = (p as f32, q as f32);
+    let curve = |t: f32| {
+        let r = 1.0 + 0.45 * (q * t).cos();
+        Vec3::new(r * (p * t).cos(), 0.45 * (q * t).sin(), r * (p * t).sin())
+    };
+    let tube = 0.18;
+    let step = std::f32::consts::TAU / rings as f32;
+    let mut m = MeshData::default();
+    for i in 0..=rings {
+        let t = (i % rings) as f32 * step;
+        let h = 1e-3;
+        let (a, b, c) = (curve(t - h), curve(t), curve(t + h));
+        let tangent = (c - a).normalize();
+        // Frenet frame: the knot's curvature never vanishes.
+        let accel = (c - 2.0 * b + a) / (h * h);
+        let normal = (accel - tangent * tangent.dot(accel)).normalize();
+        let binormal = tangent.cross(normal);
+        for j in 0..=sides {
+            let phi = std::f32::consts::TAU * (j % sides) as f32 / sides as f32;
+            let n = normal * phi.cos() + binormal * phi.sin();
+            m.vertices.push(Vertex {
+                position: (b + n * tube).to_array(),
+                normal: n.to_array(),
+                uv: [8.0 * i as f32 / rings as f32, j as f32 / sides as f32],
+                tangent: [0.0; 4],
+            });
+        }
+    }
+    let at = |i: u32, j: u32| i * (sides + 1) + j;
+    for i in 0..rings {
+        for j in 0..sides {
+            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            m.indices.extend_from_slice(&[a, b, c, a, c, d]);
+        }
+    }
+    // Make sure the frame's orientation gives outward-facing CCW triangles.
+    let t = &m.indices[0..3];
+    let pos = |k: usize| Vec3::from(m.vertices[t[k] as usize].position);
+    let face = (pos(1) - pos(0)).cross(pos(2) - pos(0));
+    if face.dot(Vec3::from(m.vertices[t[0] as usize].normal)) < 0.0 {
+        for tri in m.indices.chunks_exact_mut(3) {
+            tri.swap(1, 2);
+        }
+    }
+    m
+}
+
+/// An icosphere (2 subdivisions) pushed in and out along the radius by a
+/// deterministic function of position (so vertices split at the uv seam move
+/// together), squashed a little in y.
+fn rock() -> MeshData {
+    let mut m = geometry::icosphere(2);
+    for v in &mut m.vertices {
+        let p = Vec3::from(v.position);
+        let bump = 0.12 * (3.1 * p.x + 1.3).sin() * (2.7 * p.y - 0.4).cos()
+            + 0.07 * (5.3 * p.z + 2.1 * p.x).sin()
+            + 0.05 * (7.9 * p.y + 3.3 * p.z).cos();
+        let q = p * (1.0 + bump);
+        v.position = [q.x, q.y * 0.75, q.z];
+    }
+    m
+}
+
+/// Writes positions once per distinct position (so the rock's seam-split
+/// vertices share a `v` and get one welded normal), uvs per vertex, and
+/// normals only if asked.
+fn write_obj(path: &Path, m: &MeshData, normals: bool, what: &str) -> Result<()> {
+    let mut out = String::new();
+    writeln!(out, "# gloss scenes/assets: {what}")?;
+    writeln!(
+        out,
+        "# generated by scenes/assets/generate.rs (cargo run --release --example gen_assets)"
+    )?;
+    writeln!(
+        out,
+        "o {}",
+        path.file_stem().unwrap_or_default().to_string_lossy()
+    )?;
+    let mut position_index = std::collections::HashMap::new();
+    let mut v_of = Vec::with_capacity(m.vertices.len());
+    for v in &m.vertices {
+        let text = format!(
+            "{:.5} {:.5} {:.5}",
+            v.position[0], v.position[1], v.position[2]
+        );
+        let next = position_index.len() + 1;
+        let index = *position_index.entry(text.clone()).or_insert_with(|| {
+            writeln!(out, "v {text}").ok();
+            next
+        });
+        v_of.push(index);
+    }
+    for v in &m.vertices {
+        let uv = Vec2::from(v.uv);
+        writeln!(out, "vt {:.5} {:.5}", uv.x, uv.y)?;
+    }
+    if normals {
+        for v in &m.vertices {
+            writeln!(
+                out,
+                "vn {:.5} {:.5} {:.5}",
+                v.normal[0], v.normal[1], v.normal[2]
+            )?;
+        }
+    }
+    for t in m.indices.chunks_exact(3) {
+        out.push('f');
+        for &i in t {
+            let (v, k) = (v_of[i as usize], i as usize + 1);
+            if normals {
+                write!(out, " {v}/{k}/{k}")?;
+            } else {
+                write!(out, " {v}/{k}")?;
+            }
+        }
+        out.push('\n');
+    }
+    std::fs::write(path, &out).with_context(|| format!("writing {}", path.display()))?;
+    println!(
+        "wrote {} ({} triangles, {} bytes)",
+        path.display(),
+        m.indices.len() / 3,
+        out.len()
+    );
+    Ok(())
+}

@@ -112,6 +112,10 @@ impl Demo {
             .with_title(format!("gloss — {}", self.scene.name))
             .with_inner_size(PhysicalSize::new(w, h));
         let ctx = WindowContext::new(event_loop, attributes, self.options.debug)?;
+        println!(
+            "gloss: {} ({}), OpenGL {}.{} core",
+            ctx.info.renderer, ctx.info.vendor, ctx.info.major, ctx.info.minor
+        );
         let (w, h) = ctx.size();
         let renderer = Renderer::new(
             &ctx.gl,
@@ -165,20 +169,19 @@ impl Demo {
             return Ok(());
         };
         match event {
-            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::CloseRequested | WindowEvent::Destroyed => event_loop.exit(),
             WindowEvent::KeyboardInput { event, .. }
                 if event.state == ElementState::Pressed
                     && event.logical_key == Key::Named(NamedKey::Escape) =>
             {
                 event_loop.exit()
             }
-            WindowEvent::Resized(size) => {
-                if size.width > 0 && size.height > 0 {
-                    run.ctx.resize(size.width, size.height);
-                    run.renderer
-                        .resize(to_i32(size.width), to_i32(size.height))
-                        .context("could not resize the renderer")?;
-                }
+            // A zero size (minimised) keeps the old size until the window comes back.
+            WindowEvent::Resized(size) if size.width > 0 && size.height > 0 => {
+                run.ctx.resize(size.width, size.height);
+                run.renderer
+                    .resize(to_i32(size.width), to_i32(size.height))
+                    .context("could not resize the renderer")?;
             }
             WindowEvent::MouseInput {
                 button: MouseButton::Left,
@@ -197,11 +200,7 @@ impl Demo {
                 MouseScrollDelta::LineDelta(_, y) => y,
                 MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
             }),
-            WindowEvent::RedrawRequested => {
-                if self.frame()? {
-                    event_loop.exit();
-                }
-            }
+            WindowEvent::RedrawRequested if self.frame()? => event_loop.exit(),
             _ => {}
         }
         Ok(())
@@ -396,7 +395,9 @@ mod tests {
             eye: Vec3::new(0.0, 2.0, 5.0),
             target: Vec3::new(0.0, 1.0, 0.0),
             up: Vec3::Y,
-            projection: Projection::Perspective { fov_y_degrees: 45.0 },
+            projection: Projection::Perspective {
+                fov_y_degrees: 45.0,
+            },
             near: 0.1,
             far: 50.0,
         }

@@ -152,8 +152,8 @@ fn sphere_uv(p: Vec3) -> Vec2 {
 }
 
 /// A geodesic unit sphere: an icosahedron whose triangles are each split in
-/// four `subdivisions` times (clamped to 0..=7), vertices pushed out to radius
-/// 1. 20 * 4^s triangles. Every vertex lies ON the unit sphere, so the faces
+/// four `subdivisions` times (clamped to 0..=7), new vertices pushed out to
+/// radius 1: 20 * 4^s triangles. Every vertex lies ON the unit sphere, so the faces
 /// cut inside it; see [`light_volume_sphere`] for a mesh that encloses it.
 /// uvs use the same longitude/latitude mapping as [`uv_sphere`]; vertices are
 /// duplicated along the u seam and at the poles so no triangle wraps.
@@ -265,7 +265,7 @@ pub fn icosphere(subdivisions: u32) -> MeshData {
 /// and positions are divided by the smallest one (plus one part in a million
 /// so f32 rounding cannot put a plane back inside). Every face plane is then
 /// at distance >= 1, so scaling this mesh by the light radius covers the whole
-/// sphere of influence; the vertices stick out by about 4%.
+/// sphere of influence; the vertices end up at radius about 1.018.
 pub fn light_volume_sphere() -> MeshData {
     let mut m = icosphere(2);
     let min_distance = face_planes(&m)
@@ -650,7 +650,6 @@ fn load_obj_limited(path: &Path, max_bytes: u64, max_vertices: usize) -> Result<
         single_index: true,
         ignore_points: true,
         ignore_lines: true,
-        ..Default::default()
     };
     let (models, _materials) = tobj::load_obj_buf(&mut bytes.as_slice(), &options, |_| {
         Ok((Vec::new(), Default::default()))
@@ -679,6 +678,9 @@ fn load_obj_limited(path: &Path, max_bytes: u64, max_vertices: usize) -> Result<
         finite(&m.positions, "vertex position")?;
         finite(&m.normals, "normal")?;
         finite(&m.texcoords, "texture coordinate")?;
+        if m.indices.len() % 3 != 0 {
+            bail!("malformed OBJ file {name}: object '{object}' has a partial triangle");
+        }
         if let Some(&bad) = m.indices.iter().find(|&&i| i as usize >= n) {
             bail!(
                 "OBJ file {name}: object '{object}' has face index {bad} out of range ({n} vertices)"
@@ -874,7 +876,10 @@ mod tests {
 
     #[test]
     fn sphere_uvs_do_not_wrap_and_tangents_run_east() {
-        for (name, m) in [("icosphere", icosphere(3)), ("uv_sphere", uv_sphere(16, 32))] {
+        for (name, m) in [
+            ("icosphere", icosphere(3)),
+            ("uv_sphere", uv_sphere(16, 32)),
+        ] {
             for t in m.indices.chunks_exact(3) {
                 let u = [t[0], t[1], t[2]].map(|i| m.vertices[i as usize].uv[0]);
                 let span = u.iter().fold(f32::MIN, |a, &b| a.max(b))
@@ -924,6 +929,8 @@ mod tests {
             count += 1;
         }
         assert_eq!(count, 320);
+        let r = bounding_radius(&m);
+        assert!(r > 1.0 && r < 1.1, "vertex radius {r}");
     }
 
     #[test]

@@ -95,8 +95,8 @@ impl Acc {
             self.sum_sq += d * d;
             self.max_abs = self.max_abs.max(d);
             self.channels += 1;
-            // `!(d <= t)` so that a NaN threshold counts everything as over.
-            any_over |= !(d <= self.threshold);
+            // A NaN difference or threshold counts as over.
+            any_over |= d > self.threshold || d.is_nan() || self.threshold.is_nan();
         }
         self.pixels += 1;
         self.over += u64::from(any_over);

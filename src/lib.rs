@@ -5,9 +5,11 @@
 //! notes name it; `plan` decides which passes a scene's frame runs.
 
 pub mod attenuation;
+pub mod bench;
 pub mod deferred;
 pub mod deferred_lighting;
 pub mod deferred_shading;
+pub mod demo;
 pub mod forward;
 pub mod gbuffer;
 pub mod geometry;

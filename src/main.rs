@@ -61,7 +61,7 @@ enum Command {
         lights: Option<usize>,
     },
     /// Measure speed against error for render paths, light counts and cutoffs.
-    Bench,
+    Bench(gloss::bench::BenchArgs),
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -214,6 +214,7 @@ fn run(cli: Cli) -> Result<()> {
             print!("{}", gloss::plan::FramePlan::new(&s));
             Ok(())
         }
-        Some(Command::Bench) => Err(anyhow!("bench: not yet")),
+        Some(Command::Bench(args)) => gloss::bench::run(&args, headless_backend(cli.backend)?)
+            .map_err(|e| anyhow!("bench: {e:#}")),
     }
 }

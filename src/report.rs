@@ -453,16 +453,32 @@ fn series(rows: &[BenchRow]) -> Vec<Series> {
     out
 }
 
+/// `m * 10^k` for each `m` in `mantissas`, every decade, within `lo..=hi`.
+fn decade_ticks(lo: f64, hi: f64, mantissas: &[f64]) -> Vec<f64> {
+    let mut out = Vec::new();
+    if !(lo > 0.0 && hi >= lo && hi.is_finite()) {
+        return out;
+    }
+    let (first, last) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+    for k in first..=last.min(first + 40) {
+        for m in mantissas {
+            let v = m * 10f64.powi(k);
+            if (lo..=hi).contains(&v) {
+                out.push(v);
+            }
+        }
+    }
+    out
+}
+
+/// Axis tick label: up to 3 decimals, trailing zeros trimmed ("10", "2.5").
 fn fmt_ms_axis(v: &f64) -> String {
-    let a = v.abs();
-    if a >= 100.0 {
-        format!("{v:.0}")
-    } else if a >= 10.0 {
-        format!("{v:.1}")
-    } else if a >= 1.0 {
-        format!("{v:.2}")
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s.is_empty() || s == "-" {
+        "0".to_string()
     } else {
-        format!("{v:.3}")
+        s.to_string()
     }
 }
 
@@ -496,8 +512,12 @@ pub fn plot(rows: &[BenchRow], path: &Path) -> anyhow::Result<()> {
     {
         let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
         if log {
-            let x = (xmin / 1.5)..(xmax * 1.5);
-            draw(&root, x.log_scale(), y_range, &series, "log scale")?;
+            let (lo, hi) = (xmin / 1.5, xmax * 1.5);
+            let x = (lo..hi)
+                .log_scale()
+                .with_key_points(decade_ticks(lo, hi, &[1.0, 2.0, 5.0]))
+                .with_light_points(decade_ticks(lo, hi, &[3.0, 4.0, 6.0, 7.0, 8.0, 9.0]));
+            draw(&root, x, y_range, &series, "log scale")?;
         } else {
             let pad = ((xmax - xmin) * 0.15).max(xmax * 0.1);
             let x = (xmin - pad).max(0.0)..(xmax + pad);

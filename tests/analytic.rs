@@ -19,7 +19,11 @@ fn world_at(cam: &Camera, w: u32, h: u32, px: u32, py: u32) -> Vec3 {
     let half_width = half_height * w as f32 / h as f32;
     let ndc_x = (px as f32 + 0.5) / w as f32 * 2.0 - 1.0;
     let ndc_y = 1.0 - (py as f32 + 0.5) / h as f32 * 2.0;
-    Vec3::new(cam.eye.x + ndc_x * half_width, 0.0, cam.eye.z - ndc_y * half_height)
+    Vec3::new(
+        cam.eye.x + ndc_x * half_width,
+        0.0,
+        cam.eye.z - ndc_y * half_height,
+    )
 }
 
 /// Every 7th pixel in x and y is compared with the CPU's Phong; returns the
@@ -31,7 +35,15 @@ fn check_plane(scene: &Scene, label: &str) -> f32 {
     for py in (0..r.height).step_by(7) {
         for px in (0..r.width).step_by(7) {
             let p = world_at(&scene.camera, r.width, r.height, px, py);
-            let c = shade(&scene.lights, scene.render.ambient, m, m.diffuse, p, Vec3::Y, scene.camera.eye);
+            let c = shade(
+                &scene.lights,
+                scene.render.ambient,
+                m,
+                m.diffuse,
+                p,
+                Vec3::Y,
+                scene.camera.eye,
+            );
             let got = r.image.get_pixel(px, py);
             for ch in 0..3 {
                 let want = srgb_encode(c[ch]) * 255.0;
@@ -66,7 +78,10 @@ fn gouraud_and_flat_on_a_single_quad_are_not_phong() {
         let r = common::render(&scene, Output::Srgb8);
         let phong = common::render(&common::scene("plane.toml"), Output::Srgb8);
         let m = gloss::image_compare::compare_rgba8(&r.image, &phong.image, 2.0 / 255.0).unwrap();
-        assert!(m.max_abs > 20.0 / 255.0, "{shading:?} looks like Phong: {m}");
+        assert!(
+            m.max_abs > 20.0 / 255.0,
+            "{shading:?} looks like Phong: {m}"
+        );
     }
 }
 
@@ -79,7 +94,11 @@ fn flat_shading_gives_one_colour_per_triangle() {
     let mut colours: Vec<[u8; 4]> = r.image.pixels().map(|p| p.0).collect();
     colours.sort();
     colours.dedup();
-    assert_eq!(colours.len(), 2, "flat shading of a two-triangle plane: {colours:?}");
+    assert_eq!(
+        colours.len(),
+        2,
+        "flat shading of a two-triangle plane: {colours:?}"
+    );
 }
 
 #[test]
@@ -134,10 +153,9 @@ fn singular_model_matrix_flattened_sphere_is_lit_like_the_plane() {
     // it must look exactly like the plane. No NaN, no GL error.
     let mut scene = common::scene("plane.toml");
     let text = std::fs::read_to_string(common::root().join("scenes/plane.toml")).unwrap();
-    let text = text.replace("mesh = \"plane\"", "mesh = \"sphere\"").replace(
-        "scale = [10.0, 1.0, 10.0]",
-        "scale = [10.0, 0.0, 10.0]",
-    );
+    let text = text
+        .replace("mesh = \"plane\"", "mesh = \"sphere\"")
+        .replace("scale = [10.0, 1.0, 10.0]", "scale = [10.0, 0.0, 10.0]");
     let flat = Scene::parse(&text, &common::root().join("scenes/plane.toml")).unwrap();
     scene.objects = flat.objects;
     let nm = gloss::renderer::normal_matrix(&scene.objects[0].model);

@@ -183,6 +183,45 @@ impl WindowContext {
     }
 }
 
+/// Open a small hidden window, make its context and report what it is
+/// (`gloss info --backend window`). Uses up this process's event loop.
+pub fn query_info(debug: bool) -> Result<GlInfo> {
+    struct Probe {
+        debug: bool,
+        result: Option<Result<GlInfo>>,
+    }
+    impl winit::application::ApplicationHandler for Probe {
+        fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+            if self.result.is_none() {
+                let attributes = Window::default_attributes()
+                    .with_title("gloss info")
+                    .with_visible(false)
+                    .with_inner_size(winit::dpi::PhysicalSize::new(64u32, 64u32));
+                self.result =
+                    Some(WindowContext::new(event_loop, attributes, self.debug).map(|c| c.info));
+            }
+            event_loop.exit();
+        }
+        fn window_event(
+            &mut self,
+            _: &ActiveEventLoop,
+            _: winit::window::WindowId,
+            _: winit::event::WindowEvent,
+        ) {
+        }
+    }
+    let mut probe = Probe {
+        debug,
+        result: None,
+    };
+    event_loop()?
+        .run_app(&mut probe)
+        .map_err(|e| anyhow!("the window's event loop failed: {e}"))?;
+    probe
+        .result
+        .unwrap_or_else(|| Err(anyhow!("the window system never let gloss create a window")))
+}
+
 fn non_zero(v: u32) -> NonZeroU32 {
     NonZeroU32::new(v).unwrap_or(NonZeroU32::MIN)
 }

@@ -85,10 +85,17 @@ pub fn render(scene: &Scene, output: Output) -> Rendered {
 
 /// Compare two rendered images; on failure write actual, expected and diff
 /// under target/test-output and panic naming them.
-pub fn assert_close(name: &str, actual: &RgbaImage, expected: &RgbaImage, tol: &Tolerance) -> Metrics {
+pub fn assert_close(
+    name: &str,
+    actual: &RgbaImage,
+    expected: &RgbaImage,
+    tol: &Tolerance,
+) -> Metrics {
     let dir = out_dir();
     let expected_path = dir.join(format!("{name}.reference.png"));
-    expected.save(&expected_path).expect("write reference image");
+    expected
+        .save(&expected_path)
+        .expect("write reference image");
     image_compare::check_golden(name, actual, &expected_path, &dir, tol)
         .unwrap_or_else(|e| panic!("{e:#}"))
 }
@@ -96,5 +103,6 @@ pub fn assert_close(name: &str, actual: &RgbaImage, expected: &RgbaImage, tol: &
 /// Compare against tests/golden/<name>.png (GLOSS_UPDATE_GOLDEN=1 rewrites it).
 pub fn assert_golden(name: &str, actual: &RgbaImage, tol: &Tolerance) -> Metrics {
     let golden: &Path = &root().join("tests/golden").join(format!("{name}.png"));
-    image_compare::check_golden(name, actual, golden, &out_dir(), tol).unwrap_or_else(|e| panic!("{e:#}"))
+    image_compare::check_golden(name, actual, golden, &out_dir(), tol)
+        .unwrap_or_else(|e| panic!("{e:#}"))
 }

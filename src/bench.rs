@@ -1,0 +1,318 @@
+//! `gloss bench`: speed against error.
+//!
+//! For each setting (render path x light count x cutoff) it renders the same
+//! frame many times after a warm-up and reports the median and spread of the
+//! frame time and of each pass, and the error of the setting's image against
+//! the reference: forward rendering, which has no cutoff.
+//!
+//! Clocks: on llvmpipe, GL_TIME_ELAPSED under-reports (rasterisation is
+//! deferred until the driver flushes), so every figure here is the CPU clock
+//! around glFinish ("cpu+glFinish"). On a real GPU the whole frame is also
+//! timed with a GL_TIME_ELAPSED query ("gpu" column).
+
+use crate::gl::program::Sources;
+use crate::gl::query::TimerQuery;
+use crate::gl::{Backend, Headless};
+use crate::image_compare::compare_rgba8;
+use crate::renderer::Renderer;
+use crate::report::{self, BenchRow, Stats};
+use crate::scene::{RenderPath, Scene};
+use anyhow::{Context as _, Result, bail};
+use std::io::Write as _;
+use std::path::PathBuf;
+
+#[derive(clap::Args, Debug, Clone)]
+pub struct BenchArgs {
+    /// The scene to measure (default scenes/many-lights.toml).
+    pub scene: Option<PathBuf>,
+    /// Render paths, comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_enum,
+        default_value = "forward,deferred,volumes,prepass"
+    )]
+    pub paths: Vec<RenderPath>,
+    /// Light counts (scenes with a [light_grid]); default: the scene's own.
+    #[arg(long, value_delimiter = ',')]
+    pub lights: Vec<usize>,
+    /// Light-volume cutoffs to sweep for the paths that use one (volumes,
+    /// prepass); default: the scene's (5/256). Fractions like 5/256 are accepted.
+    #[arg(long, value_delimiter = ',', value_parser = parse_fraction)]
+    pub cutoffs: Vec<f32>,
+    /// Also measure light volumes with the two-sided stencil test.
+    #[arg(long)]
+    pub stencil: bool,
+    /// WIDTHxHEIGHT (default: the scene's render.size).
+    #[arg(long, value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Measured frames per setting.
+    #[arg(long, default_value_t = 20)]
+    pub frames: usize,
+    /// Unmeasured frames first.
+    #[arg(long, default_value_t = 3)]
+    pub warmup: usize,
+    /// Where the CSV and the plot go.
+    #[arg(long, default_value = "target/bench")]
+    pub out: PathBuf,
+}
+
+fn parse_fraction(s: &str) -> Result<f32, String> {
+    let v = match s.split_once('/') {
+        Some((a, b)) => {
+            let a: f32 = a
+                .trim()
+                .parse()
+                .map_err(|_| format!("bad number in \"{s}\""))?;
+            let b: f32 = b
+                .trim()
+                .parse()
+                .map_err(|_| format!("bad number in \"{s}\""))?;
+            a / b
+        }
+        None => s
+            .trim()
+            .parse()
+            .map_err(|_| format!("bad number \"{s}\""))?,
+    };
+    if !(v.is_finite() && v > 0.0 && v < 1.0) {
+        return Err(format!("cutoff {s}: expected a fraction in (0, 1)"));
+    }
+    Ok(v)
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("expected WIDTHxHEIGHT, found \"{s}\""))?;
+    let w: u32 = w.parse().map_err(|_| format!("bad width in \"{s}\""))?;
+    let h: u32 = h.parse().map_err(|_| format!("bad height in \"{s}\""))?;
+    if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
+        return Err(format!("size {w}x{h}: each side must be 1..=8192"));
+    }
+    Ok((w, h))
+}
+
+/// One setting to measure.
+#[derive(Clone, Debug)]
+struct Setting {
+    path: RenderPath,
+    lights: usize,
+    cutoff: Option<f32>,
+    stencil: bool,
+}
+
+impl Setting {
+    fn label(&self) -> String {
+        let mut s = self.path.name().to_string();
+        if self.stencil {
+            s.push_str("+stencil");
+        }
+        if let Some(c) = self.cutoff {
+            s.push_str(&format!(" cutoff {}", cutoff_label(c)));
+        }
+        s
+    }
+}
+
+fn cutoff_label(c: f32) -> String {
+    let n = c * 256.0;
+    if (n - n.round()).abs() < 1e-4 {
+        format!("{}/256", n.round())
+    } else {
+        format!("{c}")
+    }
+}
+
+pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
+    if args.frames == 0 {
+        bail!("--frames must be at least 1");
+    }
+    let scene_path = args
+        .scene
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("scenes/many-lights.toml"));
+    let base = Scene::load(&scene_path)?;
+    let ctx = Headless::new(backend, false)?;
+    let software = ctx.info.renderer.contains("llvmpipe") || ctx.info.renderer.contains("softpipe");
+    let (w, h) = args.size.unwrap_or(base.render.size);
+    let light_counts = if args.lights.is_empty() {
+        vec![base.lights.len()]
+    } else {
+        args.lights.clone()
+    };
+    let cutoffs = if args.cutoffs.is_empty() {
+        vec![base.render.cutoff]
+    } else {
+        args.cutoffs.clone()
+    };
+
+    let mut settings = Vec::new();
+    for &n in &light_counts {
+        for &p in &args.paths {
+            match p {
+                RenderPath::Forward | RenderPath::Deferred => settings.push(Setting {
+                    path: p,
+                    lights: n,
+                    cutoff: None,
+                    stencil: false,
+                }),
+                RenderPath::Volumes | RenderPath::Prepass => {
+                    for &c in &cutoffs {
+                        settings.push(Setting {
+                            path: p,
+                            lights: n,
+                            cutoff: Some(c),
+                            stencil: false,
+                        });
+                        if args.stencil && p == RenderPath::Volumes {
+                            settings.push(Setting {
+                                path: p,
+                                lights: n,
+                                cutoff: Some(c),
+                                stencil: true,
+                            });
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    eprintln!(
+        "gloss bench: {} at {w}x{h} on {} ({}), {} settings, {} warm-up + {} measured frames each",
+        scene_path.display(),
+        ctx.info.renderer,
+        backend,
+        settings.len(),
+        args.warmup,
+        args.frames
+    );
+    eprintln!(
+        "clock: {}",
+        if software {
+            "CPU clock around glFinish (timer queries under-report on a software rasterizer)"
+        } else {
+            "CPU clock around glFinish per pass, and GL_TIME_ELAPSED for the whole frame"
+        }
+    );
+
+    let mut references: Vec<(usize, image::RgbaImage)> = Vec::new();
+    let mut rows = Vec::new();
+    for (i, s) in settings.iter().enumerate() {
+        let mut scene = base.clone();
+        if scene.lights.len() != s.lights {
+            scene.set_light_count(s.lights)?;
+        }
+        scene.render.size = (w, h);
+        scene.render.path = s.path;
+        scene.render.stencil_volumes = s.stencil;
+        if let Some(c) = s.cutoff {
+            scene.render.cutoff = c;
+        }
+        // The reference for this light count: forward, no cutoff.
+        if !references.iter().any(|(n, _)| *n == s.lights) {
+            let mut rs = scene.clone();
+            rs.render.path = RenderPath::Forward;
+            let mut r = Renderer::new(
+                &ctx.gl,
+                &ctx.debug,
+                &rs,
+                &Sources::Embedded,
+                w as i32,
+                h as i32,
+            )?;
+            r.render(&rs.camera.clone())?;
+            references.push((s.lights, r.read_image()));
+        }
+        let reference = &references
+            .iter()
+            .find(|(n, _)| *n == s.lights)
+            .expect("made above")
+            .1;
+
+        let mut r = Renderer::new(
+            &ctx.gl,
+            &ctx.debug,
+            &scene,
+            &Sources::Embedded,
+            w as i32,
+            h as i32,
+        )
+        .with_context(|| format!("setting {}", s.label()))?;
+        r.timing = true;
+        let query = if software {
+            None
+        } else {
+            Some(TimerQuery::new(&ctx.gl)?)
+        };
+        let camera = scene.camera.clone();
+        let mut frame = Vec::new();
+        let mut gpu = Vec::new();
+        let mut passes: Vec<(String, Vec<f64>)> = Vec::new();
+        for f in 0..args.warmup + args.frames {
+            eprint!(
+                "\r[{}/{}] {:<32} {} lights: frame {}/{}   ",
+                i + 1,
+                settings.len(),
+                s.label(),
+                s.lights,
+                f + 1,
+                args.warmup + args.frames
+            );
+            let _ = std::io::stderr().flush();
+            if let Some(q) = &query {
+                q.begin();
+            }
+            r.render(&camera)?;
+            if let Some(q) = &query {
+                q.end();
+            }
+            if f < args.warmup {
+                continue;
+            }
+            if let Some(q) = &query {
+                gpu.push(q.result_ns() as f64 / 1e6);
+            }
+            frame.push(r.last_times.frame_ms);
+            for (name, ms) in &r.last_times.passes {
+                match passes.iter_mut().find(|(n, _)| n == name) {
+                    Some((_, v)) => v.push(*ms),
+                    None => passes.push((name.to_string(), vec![*ms])),
+                }
+            }
+        }
+        let img = r.read_image();
+        let m = compare_rgba8(&img, reference, 1.0 / 255.0)?;
+        rows.push(BenchRow {
+            setting: s.label(),
+            path: s.path.name().to_string(),
+            lights: s.lights,
+            cutoff: s.cutoff,
+            passes: passes
+                .into_iter()
+                .map(|(n, mut v)| (n, Stats::from_samples(&mut v)))
+                .collect(),
+            frame: Stats::from_samples(&mut frame),
+            gpu_frame_ms: if gpu.is_empty() {
+                None
+            } else {
+                Some(Stats::from_samples(&mut gpu))
+            },
+            clock: "cpu+glFinish".into(),
+            rmse: m.rmse,
+            max_abs: m.max_abs,
+            pct_over_1: m.frac_over * 100.0,
+        });
+    }
+    eprintln!();
+    println!("{}", report::table(&rows));
+    std::fs::create_dir_all(&args.out)
+        .with_context(|| format!("cannot create {}", args.out.display()))?;
+    let csv = args.out.join("bench.csv");
+    let png = args.out.join("bench.png");
+    report::write_csv(&rows, &csv)?;
+    report::plot(&rows, &png)?;
+    println!("wrote {} and {}", csv.display(), png.display());
+    Ok(())
+}

@@ -1,8 +1,10 @@
 //! Deferred shading (notes 01 §8.6; notes 02 "Deferred shading"; notes 04
 //! "Our current deferred shader"):
 //!
-//!     for every fragment in the G-buffer (the size of the screen)
-//!         for every light: calculate shading
+//! ```text
+//! for every fragment in the G-buffer (the size of the screen)
+//!     for every light: calculate shading
+//! ```
 //!
 //! One full-screen triangle per light, added together with glBlendFunc(GL_ONE,
 //! GL_ONE) into a black HDR target; then the composite pass (notes 01 §8.6.2

@@ -1,8 +1,10 @@
 //! Forward rendering (notes 04, "Forward rendering"; notes 01 §8.2 and §8.3).
 //!
-//!     for every object in the scene
-//!         for every fragment of that object
-//!             for every light: calculate shading
+//! ```text
+//! for every object in the scene
+//!     for every fragment of that object
+//!         for every light: calculate shading
+//! ```
 //!
 //! Three shading modes from notes 01 §8.2: flat (one colour per triangle,
 //! lit in a geometry shader), Gouraud (lit per vertex) and Phong (lit per

@@ -163,7 +163,14 @@ fn run(cli: Cli) -> Result<()> {
                 None => gloss::gl::window::display_available(),
             };
             if want_window {
-                bail!("demo not yet")
+                gloss::demo::run(
+                    &scene_path,
+                    gloss::demo::DemoOptions {
+                        debug: cli.debug,
+                        frames: cli.frames,
+                        size: (1280, 720),
+                    },
+                )
             } else {
                 let scene = Scene::load(&scene_path)?;
                 let out = std::env::current_dir()?.join(format!("gloss-{}.png", scene.name));
@@ -199,7 +206,9 @@ fn run(cli: Cli) -> Result<()> {
         Some(Command::Info) => {
             let backend = cli.backend.unwrap_or(Backend::Egl);
             if backend == Backend::Window {
-                bail!("window info: not yet");
+                let info = gloss::gl::window::query_info(cli.debug)?;
+                println!("{info}");
+                return Ok(());
             }
             let ctx = Headless::new(backend, cli.debug)?;
             println!("{}", ctx.info);

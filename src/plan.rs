@@ -143,14 +143,6 @@ impl FramePlan {
                     if unbounded > 0 {
                         parts.push(format!("({unbounded} with no finite radius)"));
                     }
-                    if r.stencil_volumes {
-                        passes.push(Pass {
-                            name: "volume stencil",
-                            target: "light_accumulation",
-                            draws: "per bounded light: its volume, both faces, stencil only".into(),
-                            code: "src/light_volumes.rs",
-                        });
-                    }
                     passes.push(Pass {
                         name: "lighting",
                         target: "light_accumulation",
@@ -170,7 +162,7 @@ impl FramePlan {
                     name: "composite",
                     target: "output",
                     draws: "1 full-screen triangle (ambient + light, sRGB encode)".into(),
-                    code: "src/light_volumes.rs",
+                    code: "src/deferred_shading.rs",
                 });
             }
             RenderPath::Prepass => {

@@ -774,12 +774,16 @@ fn failed_render_keeps_existing_output() {
 
     // A good scene replaces it.
     let good = write(&dir, "good.toml", BASE);
-    let status = Command::new(env!("CARGO_BIN_EXE_gloss"))
+    let run = Command::new(env!("CARGO_BIN_EXE_gloss"))
         .args([os("render"), good.as_os_str(), os("-o"), out.as_os_str()])
         .args(["--size", "32x24"])
-        .status()
+        .output()
         .expect("run gloss");
-    assert!(status.success(), "rendering the good scene: {status:?}");
+    assert!(
+        run.status.success(),
+        "rendering the good scene: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
     let new = image::open(&out).expect("the new out.png decodes");
     assert_eq!((new.width(), new.height()), (32, 24));
     assert!(!dir.join("out.png.tmp").exists());

@@ -4,8 +4,10 @@
 //!   any directory; the demo can instead read them from glsl/ on disk and
 //!   rebuild a program when a file changes.
 //! * `#include "file.glsl"` pastes a shared file (the lighting functions) in
-//!   place; `#line` directives keep line numbers right, and a compile error is
-//!   reported as `glsl/<file>:<line>: <message>`.
+//!   place. Each line of the pasted text remembers its file and line, and a
+//!   compile error is reported as `glsl/<file>:<line>: <message>`. (No `#line`
+//!   directives: Mesa drops their source-string number from most messages,
+//!   which would blame an included file's error on the file that includes it.)
 //! * `#define`s (such as MAX_LIGHTS) are inserted after the `#version` line.
 
 use super::Gl;
@@ -72,10 +74,14 @@ pub fn embedded_names() -> Vec<String> {
     v
 }
 
-/// A preprocessed shader: its text and the file each `#line` source number stands for.
+/// A preprocessed shader: its text, the files pasted into it (the main file
+/// first), and where each of its lines came from.
 pub struct Preprocessed {
     pub text: String,
     pub files: Vec<String>,
+    /// For line `n` (1-based) of `text`, `lines[n - 1]` is (index into `files`,
+    /// 1-based line in that file); inserted `#define`s count as the `#version` line.
+    pub lines: Vec<(usize, usize)>,
 }
 
 /// Expand `#include "x"` and insert `defines` after `#version`.
@@ -87,6 +93,7 @@ pub fn preprocess(
     let mut out = Preprocessed {
         text: String::new(),
         files: Vec::new(),
+        lines: Vec::new(),
     };
     expand(sources, name, defines, &mut out, 0)?;
     Ok(out)
@@ -116,33 +123,30 @@ fn expand(
                 );
             }
             expand(sources, inc, &[], out, depth + 1)?;
-            out.text.push_str(&format!("#line {} {file_no}\n", i + 2));
-        } else if trimmed.starts_with("#version") {
-            out.text.push_str(line);
-            out.text.push('\n');
-            for (k, v) in defines {
-                out.text.push_str(&format!("#define {k} {v}\n"));
-            }
-            out.text.push_str(&format!("#line {} {file_no}\n", i + 2));
         } else {
-            if i == 0 && depth > 0 {
-                out.text.push_str(&format!("#line 1 {file_no}\n"));
-            }
             out.text.push_str(line);
             out.text.push('\n');
+            out.lines.push((file_no, i + 1));
+            if trimmed.starts_with("#version") {
+                for (k, v) in defines {
+                    out.text.push_str(&format!("#define {k} {v}\n"));
+                    out.lines.push((file_no, i + 1));
+                }
+            }
         }
     }
     Ok(())
 }
 
 /// Rewrite a driver's info log so that `0:12(5): error` (Mesa) or `0(12) : error`
-/// (NVIDIA) reads `glsl/forward.frag:12: error`.
-pub fn translate_log(log: &str, files: &[String]) -> String {
+/// (NVIDIA), line 12 of the preprocessed text, reads `glsl/<file>:<line>: error`
+/// with the file and line that text came from.
+pub fn translate_log(log: &str, pre: &Preprocessed) -> String {
     let mut out = Vec::new();
     for line in log.lines().filter(|l| !l.trim().is_empty()) {
         let parsed = (|| {
             let digits_end = line.find(|c: char| !c.is_ascii_digit())?;
-            let file: usize = line[..digits_end].parse().ok()?;
+            let _source: usize = line[..digits_end].parse().ok()?;
             let rest = &line[digits_end..];
             let rest = rest.strip_prefix(':').or_else(|| rest.strip_prefix('('))?;
             let l_end = rest.find(|c: char| !c.is_ascii_digit())?;
@@ -150,7 +154,8 @@ pub fn translate_log(log: &str, files: &[String]) -> String {
             let msg = rest[l_end..]
                 .trim_start_matches(|c: char| c == ')' || c == '(' || c.is_ascii_digit())
                 .trim_start_matches([')', ' ', ':']);
-            Some(format!("glsl/{}:{lineno}: {msg}", files.get(file)?))
+            let &(file, file_line) = pre.lines.get(lineno.checked_sub(1)?)?;
+            Some(format!("glsl/{}:{file_line}: {msg}", pre.files.get(file)?))
         })();
         out.push(parsed.unwrap_or_else(|| line.to_owned()));
     }
@@ -192,7 +197,7 @@ impl Program {
                         let log = gl.get_shader_info_log(sh);
                         bail!(
                             "shader glsl/{file} failed to compile:\n{}",
-                            translate_log(&log, &pre.files)
+                            translate_log(&log, &pre)
                         );
                     }
                     gl.attach_shader(program, sh);
@@ -300,16 +305,36 @@ mod tests {
 
     #[test]
     fn mesa_and_nvidia_logs_name_file_and_line() {
-        let files = vec!["forward.frag".to_owned(), "lighting.glsl".to_owned()];
-        let mesa = "1:12(5): error: `foo' undeclared";
+        let dir = std::env::temp_dir().join("gloss-program-translate-log");
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(
+            dir.join("main.frag"),
+            "#version 330 core\n#include \"inc.glsl\"\nfloat x = foo;\n",
+        )
+        .unwrap();
+        std::fs::write(dir.join("inc.glsl"), "// shared\nfloat y = bar;\n").unwrap();
+        let pre = preprocess(
+            &Sources::Directory(dir),
+            "main.frag",
+            &[("MAX_LIGHTS", "4".to_owned())],
+        )
+        .unwrap();
         assert_eq!(
-            translate_log(mesa, &files),
-            "glsl/lighting.glsl:12: error: `foo' undeclared"
+            pre.text,
+            "#version 330 core\n#define MAX_LIGHTS 4\n// shared\nfloat y = bar;\nfloat x = foo;\n"
         );
-        let nv = "0(7) : error C1008: undefined variable \"x\"";
+        // Mesa gives the source number 0 whatever the file; the line decides.
+        let mesa = "0:4(11): error: `bar' undeclared";
         assert_eq!(
-            translate_log(nv, &files),
-            "glsl/forward.frag:7: error C1008: undefined variable \"x\""
+            translate_log(mesa, &pre),
+            "glsl/inc.glsl:2: error: `bar' undeclared"
         );
+        let nv = "0(5) : error C1008: undefined variable \"foo\"";
+        assert_eq!(
+            translate_log(nv, &pre),
+            "glsl/main.frag:3: error C1008: undefined variable \"foo\""
+        );
+        // A line the text does not have is left as the driver wrote it.
+        assert_eq!(translate_log("0:99(1): odd", &pre), "0:99(1): odd");
     }
 }

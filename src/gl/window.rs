@@ -236,8 +236,12 @@ fn open_display(event_loop: &ActiveEventLoop) -> Result<Display> {
     // default), EGL when GLX fails and under Wayland.
     let preference =
         DisplayApiPreference::GlxThenEgl(Box::new(winit::platform::x11::register_xlib_error_hook));
-    unsafe { Display::new(handle, preference) }
-        .map_err(|e| anyhow!("could not open an OpenGL display (GLX or EGL): {e}; {INSTALL_HINT}"))
+    unsafe { Display::new(handle, preference) }.map_err(|e| {
+        anyhow!(
+            "could not open an OpenGL display (GLX or EGL): {e}; {INSTALL_HINT} \
+                 (under Xvfb, the screen must be 24-bit: -screen 0 1280x720x24)"
+        )
+    })
 }
 
 #[cfg(not(target_os = "linux"))]

@@ -1,0 +1,67 @@
+//! The same scene through EGL and through OSMesa gives the same image
+//! (tolerance: at most 0.1% of pixels differ by more than 2/255; in practice
+//! they are identical, since both are Mesa's llvmpipe).
+
+mod common;
+
+use gloss::gl::Backend;
+use gloss::image_compare::Tolerance;
+use gloss::renderer::Output;
+
+#[test]
+fn egl_and_osmesa_render_the_same_images() {
+    let tol = Tolerance {
+        threshold: 2.0 / 255.0,
+        max_frac_over: 0.001,
+        max_abs: None,
+    };
+    let egl = common::context(Backend::Egl);
+    let osmesa = common::context(Backend::Osmesa);
+    assert_eq!(egl.info.backend, Backend::Egl);
+    assert_eq!(osmesa.info.backend, Backend::Osmesa);
+    assert_eq!(
+        (egl.info.major, egl.info.minor),
+        (osmesa.info.major, osmesa.info.minor)
+    );
+    for name in ["default.toml", "mixed-lights.toml"] {
+        let mut scene = common::scene(name);
+        scene.render.size = (480, 270);
+        let a = common::render_with(&egl, &scene, Output::Srgb8);
+        let b = common::render_with(&osmesa, &scene, Output::Srgb8);
+        let m = common::assert_close(
+            &format!("osmesa-vs-egl-{}", scene.name),
+            &b.image,
+            &a.image,
+            &tol,
+        );
+        eprintln!("{name}: OSMesa vs EGL: {m}");
+    }
+}
+
+#[test]
+fn info_prints_version_renderer_and_backend() {
+    for backend in ["egl", "osmesa"] {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+            .args(["info", "--backend", backend])
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        for key in [
+            "GL_VERSION",
+            "GL_RENDERER",
+            "GLSL",
+            "core",
+            &format!("backend        {backend}"),
+        ] {
+            assert!(
+                text.contains(key),
+                "gloss info --backend {backend} lacks {key}:\n{text}"
+            );
+        }
+    }
+}

@@ -65,6 +65,16 @@ pub fn run(scene_path: &Path, options: DemoOptions) -> Result<()> {
 
 /// `./glsl` when it is gloss's shader directory (running from the crate, so
 /// edited shaders are picked up), else the shaders compiled into the binary.
+/// Every shader file gloss embeds (the ones live reload watches).
+fn shader_names() -> Vec<&'static str> {
+    static NAMES: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+    NAMES
+        .get_or_init(program::embedded_names)
+        .iter()
+        .map(String::as_str)
+        .collect()
+}
+
 fn shader_sources() -> Sources {
     let dir = PathBuf::from("glsl");
     let names = program::embedded_names();
@@ -95,6 +105,9 @@ struct Running {
     left_down: bool,
     cursor: Option<PhysicalPosition<f64>>,
     title: TitleClock,
+    /// Live shader reload: when glsl/ was last seen changed, and when we last looked.
+    shaders_seen: Option<std::time::SystemTime>,
+    shaders_checked: std::time::Instant,
 }
 
 impl Demo {
@@ -133,7 +146,43 @@ impl Demo {
             left_down: false,
             cursor: None,
             title: TitleClock::new(),
+            shaders_seen: self.sources.modified(&shader_names()),
+            shaders_checked: std::time::Instant::now(),
         })
+    }
+
+    /// Live shader reload: twice a second, look at glsl/'s modification times;
+    /// when a file changed, build a new renderer from the new sources. A
+    /// shader that fails to compile is reported (file and line) and the old
+    /// renderer keeps running, so an edit never closes the window.
+    fn reload_shaders_if_changed(&mut self) {
+        let Some(run) = self.running.as_mut() else {
+            return;
+        };
+        if run.shaders_checked.elapsed() < std::time::Duration::from_millis(500) {
+            return;
+        }
+        run.shaders_checked = std::time::Instant::now();
+        let now = self.sources.modified(&shader_names());
+        if now == run.shaders_seen {
+            return;
+        }
+        run.shaders_seen = now;
+        let (w, h) = run.ctx.size();
+        match Renderer::new(
+            &run.ctx.gl,
+            &run.ctx.debug,
+            &self.scene,
+            &self.sources,
+            to_i32(w.max(1)),
+            to_i32(h.max(1)),
+        ) {
+            Ok(r) => {
+                run.renderer = r;
+                eprintln!("gloss: shaders reloaded from glsl/");
+            }
+            Err(e) => eprintln!("gloss: shader reload failed, keeping the old shaders:\n{e:#}"),
+        }
     }
 
     /// Render, blit to the window, swap. Returns whether the demo should stop.
@@ -150,6 +199,10 @@ impl Demo {
         if w == 0 || h == 0 {
             return Ok(false); // minimised
         }
+        self.reload_shaders_if_changed();
+        let Some(run) = self.running.as_mut() else {
+            return Ok(false);
+        };
         run.renderer.render(&self.orbit.camera())?;
         present(&run.ctx, run.renderer.output(), to_i32(w), to_i32(h))?;
         run.ctx.swap_buffers()?;

@@ -102,6 +102,7 @@ impl Composite {
         })
     }
 
+    #[allow(clippy::too_many_arguments)]
     pub fn draw(
         &self,
         gl: &glow::Context,

@@ -235,12 +235,12 @@ impl Program {
 
     fn loc(&self, name: &str) -> Option<glow::UniformLocation> {
         if let Some(l) = self.locations.borrow().get(name) {
-            return l.clone();
+            return *l;
         }
         let l = unsafe { self.gl.get_uniform_location(self.id, name) };
         self.locations
             .borrow_mut()
-            .insert(name.to_owned(), l.clone());
+            .insert(name.to_owned(), l);
         l
     }
 

@@ -81,7 +81,7 @@ fn parse_fraction(s: &str) -> Result<f32, String> {
     Ok(v)
 }
 
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
+pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s
         .split_once(['x', 'X'])
         .ok_or_else(|| format!("expected WIDTHxHEIGHT, found \"{s}\""))?;
@@ -286,7 +286,12 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         let m = compare_rgba8(&img, reference, 1.0 / 255.0)?;
         rows.push(BenchRow {
             setting: s.label(),
-            path: s.path.name().to_string(),
+            // The plot draws one series per path; the stencil variant is its own.
+            path: if s.stencil {
+                format!("{}+stencil", s.path.name())
+            } else {
+                s.path.name().to_string()
+            },
             lights: s.lights,
             cutoff: s.cutoff,
             passes: passes

@@ -15,7 +15,7 @@ use crate::gbuffer::GBuffer;
 use crate::gl::Gl;
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::{Program, Sources};
-use crate::light_volumes::{VolumeMeshes, begin_volume_state, draw_volumes, restore_volume_state};
+use crate::light_volumes::{VolumeMeshes, volume_pass};
 use crate::renderer::{DrawList, FrameUniforms};
 use crate::scene::Scene;
 use anyhow::Result;
@@ -60,19 +60,7 @@ impl DeferredLighting {
         accumulation: &Framebuffer,
         meshes: &VolumeMeshes,
     ) {
-        let stencil = scene.render.stencil_volumes;
-        begin_volume_state(gl, accumulation, stencil);
-        let p = &self.light;
-        p.use_program();
-        gbuffer.bind_for_lighting(gl, p, frame);
-        unsafe { gl.bind_buffer_base(glow::UNIFORM_BUFFER, 0, Some(frame.lights_ubo)) };
-        draw_volumes(gl, p, scene, frame, meshes, stencil);
-        unsafe {
-            gl.bind_buffer_base(glow::UNIFORM_BUFFER, 0, None);
-            gl.use_program(None);
-        }
-        GBuffer::unbind_textures(gl, 4);
-        restore_volume_state(gl);
+        volume_pass(gl, &self.light, scene, frame, gbuffer, accumulation, meshes);
     }
 
     /// Step 3: draw the scene again, combining light and material.

@@ -221,18 +221,41 @@ impl LightVolumes {
         accumulation: &Framebuffer,
         meshes: &VolumeMeshes,
     ) {
-        let stencil = scene.render.stencil_volumes;
-        begin_volume_state(gl, accumulation, stencil);
-        let p = &self.program;
-        p.use_program();
-        gbuffer.bind_for_lighting(gl, p, frame);
-        unsafe { gl.bind_buffer_base(glow::UNIFORM_BUFFER, 0, Some(frame.lights_ubo)) };
-        draw_volumes(gl, p, scene, frame, meshes, stencil);
-        unsafe {
-            gl.bind_buffer_base(glow::UNIFORM_BUFFER, 0, None);
-            gl.use_program(None);
-        }
-        GBuffer::unbind_textures(gl, 4);
-        restore_volume_state(gl);
+        volume_pass(
+            gl,
+            &self.program,
+            scene,
+            frame,
+            gbuffer,
+            accumulation,
+            meshes,
+        );
     }
+}
+
+/// A whole light-volume pass with program `p`: notes 04's state, the
+/// G-buffer bound, every light's volume drawn, the state restored. The light
+/// pre-pass (deferred_lighting.rs) runs the same pass with its own shader.
+#[allow(clippy::too_many_arguments)]
+pub fn volume_pass(
+    gl: &glow::Context,
+    p: &Program,
+    scene: &Scene,
+    frame: &FrameUniforms,
+    gbuffer: &GBuffer,
+    accumulation: &Framebuffer,
+    meshes: &VolumeMeshes,
+) {
+    let stencil = scene.render.stencil_volumes;
+    begin_volume_state(gl, accumulation, stencil);
+    p.use_program();
+    gbuffer.bind_for_lighting(gl, p, frame);
+    unsafe { gl.bind_buffer_base(glow::UNIFORM_BUFFER, 0, Some(frame.lights_ubo)) };
+    draw_volumes(gl, p, scene, frame, meshes, stencil);
+    unsafe {
+        gl.bind_buffer_base(glow::UNIFORM_BUFFER, 0, None);
+        gl.use_program(None);
+    }
+    GBuffer::unbind_textures(gl, 4);
+    restore_volume_state(gl);
 }

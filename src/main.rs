@@ -38,7 +38,7 @@ enum Command {
         #[arg(short, long)]
         output: PathBuf,
         /// WIDTHxHEIGHT (default: the scene's render.size)
-        #[arg(long, value_parser = parse_size)]
+        #[arg(long, value_parser = gloss::bench::parse_size)]
         size: Option<(u32, u32)>,
         /// Override the scene's render path.
         #[arg(long, value_enum)]
@@ -62,18 +62,6 @@ enum Command {
     },
     /// Measure speed against error for render paths, light counts and cutoffs.
     Bench(gloss::bench::BenchArgs),
-}
-
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let (w, h) = s
-        .split_once(['x', 'X'])
-        .ok_or_else(|| format!("expected WIDTHxHEIGHT, found \"{s}\""))?;
-    let w: u32 = w.parse().map_err(|_| format!("bad width in \"{s}\""))?;
-    let h: u32 = h.parse().map_err(|_| format!("bad height in \"{s}\""))?;
-    if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
-        return Err(format!("size {w}x{h}: each side must be 1..=8192"));
-    }
-    Ok((w, h))
 }
 
 fn main() -> ExitCode {

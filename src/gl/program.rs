@@ -238,9 +238,7 @@ impl Program {
             return *l;
         }
         let l = unsafe { self.gl.get_uniform_location(self.id, name) };
-        self.locations
-            .borrow_mut()
-            .insert(name.to_owned(), l);
+        self.locations.borrow_mut().insert(name.to_owned(), l);
         l
     }
 

@@ -1,0 +1,82 @@
+//! `gloss bench` runs end to end and writes its table, CSV and plot. (It
+//! measures speed; no test here asserts a time, only that the error column
+//! is right: forward against itself is exact, light volumes with a cutoff
+//! are not.)
+
+use std::process::Command;
+
+#[test]
+fn bench_writes_table_csv_and_plot() {
+    let out = std::env::temp_dir().join("gloss-bench-test");
+    let _ = std::fs::remove_dir_all(&out);
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([
+            "bench",
+            "scenes/many-lights.toml",
+            "--paths",
+            "forward,volumes",
+            "--lights",
+            "4,16",
+        ])
+        .args([
+            "--cutoffs",
+            "5/256",
+            "--frames",
+            "2",
+            "--warmup",
+            "1",
+            "--size",
+            "96x54",
+            "--out",
+        ])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rows: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.starts_with("forward") || l.starts_with("volumes"))
+        .collect();
+    assert_eq!(rows.len(), 4, "{stdout}");
+    // forward is the reference: zero error, speed-up 1.00x.
+    for r in rows.iter().filter(|r| r.starts_with("forward")) {
+        assert!(r.contains("1.00×") && r.contains("0.000"), "{r}");
+    }
+    assert!(
+        stdout.contains("cpu+glFinish"),
+        "the clock is named: {stdout}"
+    );
+    let csv = std::fs::read_to_string(out.join("bench.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 5, "{csv}");
+    let png = image::open(out.join("bench.png")).unwrap();
+    assert!(png.width() > 100 && png.height() > 100);
+}
+
+#[test]
+fn bench_rejects_bad_arguments() {
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([
+            "bench",
+            "scenes/plane.toml",
+            "--lights",
+            "16",
+            "--frames",
+            "1",
+            "--size",
+            "32x32",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(err.contains("has no [light_grid]"), "{err}");
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "--cutoffs", "2"])
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("expected a fraction in (0, 1)"));
+}

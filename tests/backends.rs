@@ -65,3 +65,29 @@ fn info_prints_version_renderer_and_backend() {
         }
     }
 }
+
+#[test]
+fn no_arguments_without_a_display_renders_the_default_scene() {
+    let dir = std::env::temp_dir().join("gloss-no-args");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .current_dir(&dir)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let png = dir.join("gloss-default.png");
+    assert!(
+        stdout.contains(&png.display().to_string()),
+        "says where: {stdout}"
+    );
+    let img = image::open(&png).unwrap();
+    assert_eq!((img.width(), img.height()), (1280, 720));
+}

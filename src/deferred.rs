@@ -142,7 +142,7 @@ impl Deferred {
                         &self.accumulation,
                         &self.meshes,
                     );
-                    timer.mark("lighting");
+                    timer.mark("light pre-pass");
                 } else {
                     clear_accumulation(gl, &self.accumulation);
                 }

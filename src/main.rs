@@ -102,15 +102,14 @@ fn headless_backend(b: Option<Backend>) -> Result<Backend> {
 pub fn render_to_png(scene: &Scene, backend: Backend, debug: bool, out: &Path) -> Result<()> {
     let ctx = Headless::new(backend, debug)?;
     let (w, h) = scene.render.size;
-    let renderer = Renderer::new(
+    let mut renderer = Renderer::new(
         &ctx.gl,
         &ctx.debug,
         scene,
         &Sources::Embedded,
         w as i32,
         h as i32,
-    );
-    let mut renderer = renderer?;
+    )?;
     renderer.render(&scene.camera.clone())?;
     let img = renderer.read_image();
     drop(renderer);

@@ -67,6 +67,10 @@ impl FramePlan {
             name: "gbuffer",
             attachments: GBUFFER_ATTACHMENTS.iter().map(|s| s.to_string()).collect(),
         };
+        let accumulation = Target {
+            name: "light_accumulation",
+            attachments: vec![format!("light:{accum}"), "depth_stencil:gbuffer's".into()],
+        };
         let gbuffer_pass = Pass {
             name: "gbuffer",
             target: "gbuffer",
@@ -77,27 +81,21 @@ impl FramePlan {
         let mut targets = Vec::new();
         match r.path {
             RenderPath::Forward => {
-                let (what, code) = match r.shading {
-                    Shading::Phong => ("forward (Phong shading)", "src/forward.rs"),
-                    Shading::Gouraud => ("forward (Gouraud shading)", "src/forward.rs"),
-                    Shading::Flat => ("forward (flat shading)", "src/forward.rs"),
+                let mode = match r.shading {
+                    Shading::Phong => "Phong shading, per fragment",
+                    Shading::Gouraud => "Gouraud shading, per vertex",
+                    Shading::Flat => "flat shading, per triangle in a geometry shader",
                 };
-                let _ = what;
                 targets.push(output);
                 passes.push(Pass {
                     name: "forward",
                     target: "output",
-                    draws: format!("{n_objects} objects x {n_lights} lights per fragment"),
-                    code,
+                    draws: format!("{n_objects} objects x {n_lights} lights ({mode})"),
+                    code: "src/forward.rs",
                 });
             }
             RenderPath::Deferred => {
-                targets.push(gbuffer);
-                targets.push(Target {
-                    name: "light_accumulation",
-                    attachments: vec![format!("light:{accum}"), "depth_stencil:gbuffer's".into()],
-                });
-                targets.push(output);
+                targets.extend([gbuffer, accumulation, output]);
                 passes.push(gbuffer_pass);
                 if n_lights > 0 {
                     passes.push(Pass {
@@ -115,12 +113,7 @@ impl FramePlan {
                 });
             }
             RenderPath::Volumes => {
-                targets.push(gbuffer);
-                targets.push(Target {
-                    name: "light_accumulation",
-                    attachments: vec![format!("light:{accum}"), "depth_stencil:gbuffer's".into()],
-                });
-                targets.push(output);
+                targets.extend([gbuffer, accumulation, output]);
                 passes.push(gbuffer_pass);
                 if n_lights > 0 {
                     let unbounded = scene
@@ -166,7 +159,15 @@ impl FramePlan {
                 });
             }
             RenderPath::Prepass => {
-                targets.push(gbuffer);
+                // The light pre-pass needs no material in its G-buffer.
+                let thin = Target {
+                    name: "gbuffer",
+                    attachments: vec![
+                        GBUFFER_ATTACHMENTS[0].to_string(),
+                        GBUFFER_ATTACHMENTS[3].to_string(),
+                    ],
+                };
+                targets.push(thin);
                 targets.push(Target {
                     name: "light_accumulation",
                     attachments: vec![
@@ -176,7 +177,10 @@ impl FramePlan {
                     ],
                 });
                 targets.push(output);
-                passes.push(gbuffer_pass);
+                passes.push(Pass {
+                    draws: format!("{n_objects} objects (normal + shininess, depth)"),
+                    ..gbuffer_pass
+                });
                 if n_lights > 0 {
                     passes.push(Pass {
                         name: "light pre-pass",
@@ -190,7 +194,9 @@ impl FramePlan {
                 passes.push(Pass {
                     name: "combine",
                     target: "output",
-                    draws: "1 full-screen triangle (material x light, sRGB encode)".into(),
+                    draws: format!(
+                        "{n_objects} objects again, GL_LEQUAL against the G-buffer's depth (blitted): material x light, sRGB encode"
+                    ),
                     code: "src/deferred_lighting.rs",
                 });
             }

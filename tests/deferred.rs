@@ -275,6 +275,14 @@ fn frame_plan_lists_the_right_passes() {
     // The light pre-pass's G-buffer is thin; deferred shading's is not.
     let pre = FramePlan::new(&with_path(&base, RenderPath::Prepass));
     assert_eq!(pre.targets[0].name, "gbuffer");
+    assert_eq!(pre.targets[0].attachments.len(), 2, "{pre}");
+    assert_eq!(
+        FramePlan::new(&with_path(&base, RenderPath::Deferred)).targets[0]
+            .attachments
+            .len(),
+        4
+    );
+    assert!(pre.passes[2].draws.contains("3 objects again"), "{pre}");
     // A scene without lights runs no lighting pass.
     let mut dark = with_path(&base, RenderPath::Volumes);
     dark.lights.clear();
@@ -327,4 +335,44 @@ fn debug_output_catches_a_gl_error() {
     unsafe { ctx.gl.enable(0xDEAD) };
     let err = ctx.debug.check(&ctx.gl, "a deliberate error").unwrap_err();
     assert!(format!("{err}").contains("GL_INVALID_ENUM"), "{err}");
+}
+
+#[test]
+fn the_renderer_runs_exactly_the_planned_passes() {
+    // The plan is not just words: with timing on, the renderer reports each
+    // pass it ran, and they must be the plan's passes in the plan's order,
+    // with and without lights.
+    let ctx = common::context(common::backend());
+    for lights in [true, false] {
+        for path in [
+            RenderPath::Forward,
+            RenderPath::Deferred,
+            RenderPath::Volumes,
+            RenderPath::Prepass,
+        ] {
+            let mut scene = with_path(&common::scene("mixed-lights.toml"), path);
+            if !lights {
+                scene.lights.clear();
+            }
+            scene.render.size = (64, 36);
+            let mut r = gloss::renderer::Renderer::new(
+                &ctx.gl,
+                &ctx.debug,
+                &scene,
+                &gloss::gl::program::Sources::Embedded,
+                64,
+                36,
+            )
+            .unwrap();
+            r.timing = true;
+            r.render(&scene.camera.clone()).unwrap();
+            let ran: Vec<&str> = r.last_times.passes.iter().map(|p| p.0).collect();
+            let planned: Vec<&str> = FramePlan::new(&scene)
+                .passes
+                .iter()
+                .map(|p| p.name)
+                .collect();
+            assert_eq!(ran, planned, "{path:?}, lights: {lights}");
+        }
+    }
 }

@@ -115,13 +115,8 @@ impl DeferredLighting {
             gl.bind_texture(glow::TEXTURE_2D, Some(light.colors[0].id));
             gl.active_texture(glow::TEXTURE5);
             gl.bind_texture(glow::TEXTURE_2D, Some(light.colors[1].id));
-            for d in &draws.items {
-                gl.front_face(if d.mirrored { glow::CW } else { glow::CCW });
-                draws.set_object_uniforms(gl, p, d);
-                draws.meshes[d.mesh].draw();
-            }
+            draws.draw_objects(gl, p);
 
-            gl.front_face(glow::CCW);
             GBuffer::unbind_textures(gl, 6);
             gl.use_program(None);
             gl.disable(glow::CULL_FACE);

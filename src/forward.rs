@@ -98,15 +98,9 @@ impl Forward {
             program.set_bool("u_output_srgb", frame.output_srgb);
             program.set_i32("u_diffuse_texture", 0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, 0, Some(frame.lights_ubo));
-            for d in &draws.items {
-                // A mirroring model matrix turns counter-clockwise triangles clockwise.
-                gl.front_face(if d.mirrored { glow::CW } else { glow::CCW });
-                draws.set_object_uniforms(gl, program, d);
-                draws.meshes[d.mesh].draw();
-            }
+            draws.draw_objects(gl, program);
 
             // Restore the state this pass changed.
-            gl.front_face(glow::CCW);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, 0, None);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.use_program(None);

@@ -93,13 +93,8 @@ impl GBuffer {
             p.use_program();
             p.set_mat4("u_view_projection", &frame.view_projection);
             p.set_i32("u_diffuse_texture", 0);
-            for d in &draws.items {
-                gl.front_face(if d.mirrored { glow::CW } else { glow::CCW });
-                draws.set_object_uniforms(gl, p, d);
-                draws.meshes[d.mesh].draw();
-            }
+            draws.draw_objects(gl, p);
 
-            gl.front_face(glow::CCW);
             gl.disable(glow::FRAMEBUFFER_SRGB);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.use_program(None);

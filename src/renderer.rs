@@ -55,6 +55,18 @@ pub struct DrawList {
 }
 
 impl DrawList {
+    /// Draw every object with program `p` (in use): per object, glFrontFace
+    /// (a mirroring model matrix turns counter-clockwise triangles clockwise),
+    /// its uniforms and texture, glDrawElements. Leaves glFrontFace(GL_CCW).
+    pub fn draw_objects(&self, gl: &glow::Context, p: &Program) {
+        for d in &self.items {
+            unsafe { gl.front_face(if d.mirrored { glow::CW } else { glow::CCW }) };
+            self.set_object_uniforms(gl, p, d);
+            self.meshes[d.mesh].draw();
+        }
+        unsafe { gl.front_face(glow::CCW) };
+    }
+
     /// glUniform* for one object's transform and material; binds its texture on unit 0.
     pub fn set_object_uniforms(&self, gl: &glow::Context, p: &Program, d: &DrawItem) {
         p.set_mat4("u_model", &d.model);

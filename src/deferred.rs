@@ -18,18 +18,28 @@ use crate::gl::texture::Texture;
 use crate::light_volumes::{LightVolumes, VolumeMeshes};
 use crate::renderer::{DrawList, FrameUniforms, PassTimer};
 use crate::scene::{RenderPath, Scene};
-use anyhow::Result;
+use anyhow::{Result, bail};
 
 pub struct Deferred {
-    path: RenderPath,
     accumulation_format: u32,
     pub gbuffer: GBuffer,
     pub accumulation: Framebuffer,
     meshes: VolumeMeshes,
-    shading: Option<DeferredShading>,
-    volumes: Option<LightVolumes>,
-    prepass: Option<DeferredLighting>,
-    composite: Option<Composite>,
+    lighting: Lighting,
+}
+
+/// The lighting and final passes of each deferred path.
+enum Lighting {
+    FullScreen(DeferredShading, Composite),
+    Volumes(LightVolumes, Composite),
+    PrePass(DeferredLighting),
+}
+
+impl Lighting {
+    /// The light pre-pass fills a thin G-buffer and accumulates into two targets.
+    fn thin(&self) -> bool {
+        matches!(self, Lighting::PrePass(_))
+    }
 }
 
 impl Deferred {
@@ -41,38 +51,33 @@ impl Deferred {
         width: i32,
         height: i32,
     ) -> Result<Deferred> {
-        let path = scene.render.path;
-        let thin = path == RenderPath::Prepass;
+        let lighting = match scene.render.path {
+            RenderPath::Deferred => Lighting::FullScreen(
+                DeferredShading::new(gl, sources, defines)?,
+                Composite::new(gl, sources)?,
+            ),
+            RenderPath::Volumes => Lighting::Volumes(
+                LightVolumes::new(gl, sources, defines)?,
+                Composite::new(gl, sources)?,
+            ),
+            RenderPath::Prepass => Lighting::PrePass(DeferredLighting::new(gl, sources, defines)?),
+            RenderPath::Forward => bail!("the forward path has no deferred passes"),
+        };
+        let thin = lighting.thin();
         let gbuffer = GBuffer::new(gl, sources, width, height, thin)?;
         let accumulation_format = scene.render.accumulation;
         let accumulation = make_accumulation(gl, &gbuffer, accumulation_format, thin)?;
         Ok(Deferred {
-            path,
             accumulation_format,
             meshes: VolumeMeshes::new(gl)?,
-            shading: match path {
-                RenderPath::Deferred => Some(DeferredShading::new(gl, sources, defines)?),
-                _ => None,
-            },
-            volumes: match path {
-                RenderPath::Volumes => Some(LightVolumes::new(gl, sources, defines)?),
-                _ => None,
-            },
-            prepass: match path {
-                RenderPath::Prepass => Some(DeferredLighting::new(gl, sources, defines)?),
-                _ => None,
-            },
-            composite: match path {
-                RenderPath::Deferred | RenderPath::Volumes => Some(Composite::new(gl, sources)?),
-                _ => None,
-            },
             gbuffer,
             accumulation,
+            lighting,
         })
     }
 
     pub fn resize(&mut self, gl: &Gl, width: i32, height: i32) -> Result<()> {
-        let thin = self.path == RenderPath::Prepass;
+        let thin = self.lighting.thin();
         // The accumulation target refers to the G-buffer's depth: drop it first.
         self.accumulation = Framebuffer::new(gl, "placeholder", 1, 1, &[glow::RGBA8], None)?;
         self.gbuffer.fbo = GBuffer::make_fbo(gl, width, height, thin)?;
@@ -89,80 +94,60 @@ impl Deferred {
         output: &Framebuffer,
         timer: &mut PassTimer,
     ) {
-        self.gbuffer.draw(gl, &scene.render, frame, draws);
+        let (gbuffer, accumulation, meshes) = (&self.gbuffer, &self.accumulation, &self.meshes);
+        gbuffer.draw(gl, &scene.render, frame, draws);
         timer.mark("gbuffer");
-        let has_lights = frame.light_count > 0;
-        match self.path {
-            RenderPath::Deferred | RenderPath::Volumes => {
-                if let (true, Some(s)) = (has_lights, &self.shading) {
-                    s.lighting(
-                        gl,
-                        frame,
-                        &self.gbuffer,
-                        &self.accumulation,
-                        &self.meshes.fullscreen,
-                    );
+        // A frame with no lights runs no lighting pass; its target still reads as black.
+        let lit = frame.light_count > 0;
+        if !lit {
+            clear_accumulation(gl, accumulation);
+        }
+        match &self.lighting {
+            Lighting::FullScreen(shading, composite) => {
+                if lit {
+                    shading.lighting(gl, frame, gbuffer, accumulation, &meshes.fullscreen);
                     timer.mark("lighting");
-                } else if let (true, Some(v)) = (has_lights, &self.volumes) {
-                    v.lighting(
-                        gl,
-                        scene,
-                        frame,
-                        &self.gbuffer,
-                        &self.accumulation,
-                        &self.meshes,
-                    );
-                    timer.mark("lighting");
-                } else {
-                    clear_accumulation(gl, &self.accumulation);
                 }
-                let c = self
-                    .composite
-                    .as_ref()
-                    .expect("composite exists for this path");
-                c.draw(
+                composite.draw(
                     gl,
                     scene,
                     frame,
-                    &self.gbuffer,
-                    &self.accumulation,
+                    gbuffer,
+                    accumulation,
                     output,
-                    &self.meshes.fullscreen,
+                    &meshes.fullscreen,
                 );
                 timer.mark("composite");
             }
-            RenderPath::Prepass => {
-                let p = self.prepass.as_ref().expect("prepass programs exist");
-                if has_lights {
-                    p.lighting(
-                        gl,
-                        scene,
-                        frame,
-                        &self.gbuffer,
-                        &self.accumulation,
-                        &self.meshes,
-                    );
-                    timer.mark("light pre-pass");
-                } else {
-                    clear_accumulation(gl, &self.accumulation);
+            Lighting::Volumes(volumes, composite) => {
+                if lit {
+                    volumes.lighting(gl, scene, frame, gbuffer, accumulation, meshes);
+                    timer.mark("lighting");
                 }
-                p.combine(
+                composite.draw(
                     gl,
                     scene,
                     frame,
-                    draws,
-                    &self.gbuffer,
-                    &self.accumulation,
+                    gbuffer,
+                    accumulation,
                     output,
+                    &meshes.fullscreen,
                 );
+                timer.mark("composite");
+            }
+            Lighting::PrePass(prepass) => {
+                if lit {
+                    prepass.lighting(gl, scene, frame, gbuffer, accumulation, meshes);
+                    timer.mark("light pre-pass");
+                }
+                prepass.combine(gl, scene, frame, draws, gbuffer, accumulation, output);
                 timer.mark("combine");
             }
-            RenderPath::Forward => unreachable!("the forward path has no deferred resources"),
         }
     }
 }
 
-/// With no lights the lighting pass is skipped; its target still reads as black.
+/// Clear the light accumulation target to black.
 fn clear_accumulation(gl: &glow::Context, target: &Framebuffer) {
     use glow::HasContext;
     unsafe {

@@ -1,24 +1,40 @@
 //! gloss: an OpenGL 3.3 core-profile reference renderer for a real-time graphics course.
 //!
-//! Read it next to the notes in ../shared/notes (see docs/README.md for the map):
-//! `gl/` owns GL objects and contexts; each technique has a file named as the
-//! notes name it; `plan` decides which passes a scene's frame runs.
+//! The modules are layers; imports only run downwards (tests/architecture.rs
+//! checks it, docs/architecture.md explains it):
+//!
+//! | layer | modules | holds |
+//! |---|---|---|
+//! | 0 | `math`, `image_compare` | notes 01 §2 transforms; image metrics |
+//! | 1 | `geometry` | procedural shapes, OBJ loading, normals and tangents |
+//! | 2 | `gl` | thin owners of GL objects, and the contexts |
+//! | 3 | `scene` | scene types, the TOML format, validation |
+//! | 4 | `lighting` | CPU twins of the shader formulas (Phong, attenuation) |
+//! | 5 | `frame` | the plan, draw list, lights, targets, uniforms, timing |
+//! | 6 | `techniques` | one file per technique, by chapter, and the registry |
+//! | 7 | `renderer` | runs the plan |
+//! | 8 | `bench`, `demo` | the tools; `src/main.rs` is the command line |
 
-pub mod attenuation;
 pub mod bench;
-pub mod deferred;
-pub mod deferred_lighting;
-pub mod deferred_shading;
 pub mod demo;
-pub mod forward;
-pub mod gbuffer;
+pub mod frame;
 pub mod geometry;
 pub mod gl;
 pub mod image_compare;
-pub mod light_volumes;
 pub mod lighting;
 pub mod math;
-pub mod plan;
 pub mod renderer;
 pub mod report;
 pub mod scene;
+pub mod techniques;
+
+// TEMPORARY until scene/ is merged.
+pub use lighting::attenuation;
+pub trait GlEnumShim {
+    fn gl(self) -> u32;
+}
+impl GlEnumShim for u32 {
+    fn gl(self) -> u32 {
+        self
+    }
+}

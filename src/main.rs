@@ -2,8 +2,8 @@
 
 use anyhow::{Context as _, Result, anyhow, bail};
 use clap::{Parser, Subcommand};
-use gloss::gl::{Backend, Headless, program::Sources};
-use gloss::renderer::Renderer;
+use gloss::gl::{Backend, Headless};
+use gloss::renderer::{Output, render_scene};
 use gloss::scene::{RenderPath, Scene, Shading};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -101,18 +101,7 @@ fn headless_backend(b: Option<Backend>) -> Result<Backend> {
 
 pub fn render_to_png(scene: &Scene, backend: Backend, debug: bool, out: &Path) -> Result<()> {
     let ctx = Headless::new(backend, debug)?;
-    let (w, h) = scene.render.size;
-    let mut renderer = Renderer::new(
-        &ctx.gl,
-        &ctx.debug,
-        scene,
-        &Sources::Embedded,
-        w as i32,
-        h as i32,
-    )?;
-    renderer.render(&scene.camera.clone())?;
-    let img = renderer.read_image();
-    drop(renderer);
+    let img = render_scene(&ctx, scene, Output::Srgb8)?.read_image();
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
@@ -207,7 +196,7 @@ fn run(cli: Cli) -> Result<()> {
             lights,
         }) => {
             let s = load_scene(&scene, path, lights)?;
-            print!("{}", gloss::plan::FramePlan::new(&s));
+            print!("{}", gloss::techniques::plan(&s));
             Ok(())
         }
         Some(Command::Bench(args)) => gloss::bench::run(&args, headless_backend(cli.backend)?)

@@ -620,18 +620,29 @@ fn png_absurdly_large() {
 // ---------------------------------------------------------------------------
 // Shaders
 
+/// Copy glsl/ and its chapter folders into `dir`.
+fn copy_glsl(dir: &Path) {
+    fn copy(from: &Path, to: &Path) {
+        std::fs::create_dir_all(to).expect("create shader folder");
+        for entry in std::fs::read_dir(from).expect("read a glsl/ folder") {
+            let entry = entry.expect("glsl/ entry");
+            let target = to.join(entry.file_name());
+            if entry.file_type().expect("file type").is_dir() {
+                copy(&entry.path(), &target);
+            } else {
+                std::fs::copy(entry.path(), target).expect("copy shader");
+            }
+        }
+    }
+    copy(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/glsl")), dir);
+}
+
 /// glsl/ copied to a fresh directory, with the first line of `file` that
 /// contains `needle` replaced by `broken`. Returns the directory and that
 /// line's 1-based number.
 fn broken_glsl(test: &str, file: &str, needle: &str, broken: &str) -> (PathBuf, usize) {
     let dir = temp_dir(test);
-    let glsl = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/glsl"));
-    for entry in std::fs::read_dir(glsl).expect("read glsl/") {
-        let entry = entry.expect("glsl/ entry");
-        if entry.file_type().expect("file type").is_file() {
-            std::fs::copy(entry.path(), dir.join(entry.file_name())).expect("copy shader");
-        }
-    }
+    copy_glsl(&dir);
     let text = std::fs::read_to_string(dir.join(file)).expect("read shader");
     let mut line_no = None;
     let lines: Vec<String> = text
@@ -658,8 +669,8 @@ fn forward_program_fails(dir: PathBuf) -> String {
         &ctx.gl,
         &Sources::Directory(dir),
         &[
-            (glow::VERTEX_SHADER, "forward.vert"),
-            (glow::FRAGMENT_SHADER, "forward.frag"),
+            (glow::VERTEX_SHADER, "lighting/forward.vert"),
+            (glow::FRAGMENT_SHADER, "lighting/forward.frag"),
         ],
         &[("MAX_LIGHTS", "16".to_string())],
     );
@@ -673,18 +684,14 @@ fn forward_program_fails(dir: PathBuf) -> String {
 fn shader_sources_from_a_directory_compile() {
     // The unbroken copy compiles, so the failures below are the broken lines.
     let dir = temp_dir("shader_sources_from_a_directory_compile");
-    let glsl = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/glsl"));
-    for entry in std::fs::read_dir(glsl).expect("read glsl/") {
-        let entry = entry.expect("glsl/ entry");
-        std::fs::copy(entry.path(), dir.join(entry.file_name())).expect("copy shader");
-    }
+    copy_glsl(&dir);
     let ctx = Headless::new(Backend::Egl, true).expect("headless EGL context");
     Program::new(
         &ctx.gl,
         &Sources::Directory(dir),
         &[
-            (glow::VERTEX_SHADER, "forward.vert"),
-            (glow::FRAGMENT_SHADER, "forward.frag"),
+            (glow::VERTEX_SHADER, "lighting/forward.vert"),
+            (glow::FRAGMENT_SHADER, "lighting/forward.frag"),
         ],
         &[("MAX_LIGHTS", "16".to_string())],
     )
@@ -695,7 +702,7 @@ fn shader_sources_from_a_directory_compile() {
 fn shader_compile_error_in_main_file() {
     let (dir, line) = broken_glsl(
         "shader_compile_error_in_main_file",
-        "forward.frag",
+        "lighting/forward.frag",
         "vec3 V = normalize(",
         "    vec3 V = normalize(u_no_such_uniform);",
     );
@@ -703,8 +710,8 @@ fn shader_compile_error_in_main_file() {
     contains_all(
         &msg,
         &[
-            "shader glsl/forward.frag failed to compile",
-            &format!("glsl/forward.frag:{line}: "),
+            "shader glsl/lighting/forward.frag failed to compile",
+            &format!("glsl/lighting/forward.frag:{line}: "),
             "u_no_such_uniform",
         ],
     );
@@ -714,7 +721,7 @@ fn shader_compile_error_in_main_file() {
 fn shader_compile_error_in_included_file() {
     let (dir, line) = broken_glsl(
         "shader_compile_error_in_included_file",
-        "lighting.glsl",
+        "common/lighting.glsl",
         "float att = ",
         "    float att = no_such_function(d);",
     );
@@ -722,8 +729,8 @@ fn shader_compile_error_in_included_file() {
     contains_all(
         &msg,
         &[
-            "shader glsl/forward.frag failed to compile",
-            &format!("glsl/lighting.glsl:{line}: "),
+            "shader glsl/lighting/forward.frag failed to compile",
+            &format!("glsl/common/lighting.glsl:{line}: "),
             "no_such_function",
         ],
     );
@@ -733,9 +740,9 @@ fn shader_compile_error_in_included_file() {
 fn shader_file_missing() {
     let (dir, _) = broken_glsl(
         "shader_file_missing",
-        "forward.frag",
-        "#include \"lighting.glsl\"",
-        "#include \"lighting_missing.glsl\"",
+        "lighting/forward.frag",
+        "#include \"common/lighting.glsl\"",
+        "#include \"common/lighting_missing.glsl\"",
     );
     let msg = forward_program_fails(dir);
     contains_all(&msg, &["cannot read shader", "lighting_missing.glsl"]);

@@ -4,7 +4,16 @@
 
 use anyhow::{Result, bail};
 use glow::HasContext;
+use std::cell::{Cell, RefCell};
 use std::sync::{Arc, Mutex};
+
+thread_local! {
+    /// Whether draws on this thread check for feedback loops (set by a
+    /// DebugLog installed with checks on; the context is current on this thread).
+    static CHECK_FEEDBACK: Cell<bool> = const { Cell::new(false) };
+    /// Feedback loops found since the last `DebugLog::check`.
+    static FEEDBACK_LOOPS: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+}
 
 /// Messages the driver reported. Errors (and high-severity messages) are
 /// kept; performance notes and the like are dropped.
@@ -24,6 +33,7 @@ impl DebugLog {
             enabled,
             khr_debug: khr && enabled,
         };
+        CHECK_FEEDBACK.with(|c| c.set(enabled));
         if log.khr_debug {
             let sink = log.messages.clone();
             unsafe {
@@ -61,6 +71,7 @@ impl DebugLog {
             }
         }
         errors.append(&mut self.messages.lock().unwrap_or_else(|p| p.into_inner()));
+        FEEDBACK_LOOPS.with(|f| errors.append(&mut f.borrow_mut()));
         if !errors.is_empty() {
             bail!(
                 "OpenGL reported errors during {what}:\n  {}",
@@ -68,6 +79,72 @@ impl DebugLog {
             );
         }
         Ok(())
+    }
+}
+
+/// With checks on, before a draw: is any texture bound to a texture unit
+/// also attached to the framebuffer being drawn into? Sampling it there is a
+/// feedback loop, undefined in GL 3.3 (§4.4.3) even where a driver forgives
+/// it, so it is reported as an error at the next `DebugLog::check`. Only
+/// queries state (glGet*), changes none.
+pub fn check_feedback_before_draw(gl: &glow::Context) {
+    if !CHECK_FEEDBACK.with(Cell::get) {
+        return;
+    }
+    let found = feedback_loops(gl);
+    if !found.is_empty() {
+        FEEDBACK_LOOPS.with(|f| f.borrow_mut().extend(found));
+    }
+}
+
+/// The textures both bound for sampling and attached to the current draw
+/// framebuffer, described.
+pub fn feedback_loops(gl: &glow::Context) -> Vec<String> {
+    unsafe {
+        let fb = gl.get_parameter_i32(glow::DRAW_FRAMEBUFFER_BINDING);
+        if fb == 0 {
+            return Vec::new();
+        }
+        let mut attached = Vec::new();
+        let points = (0..8)
+            .map(|i| glow::COLOR_ATTACHMENT0 + i)
+            .chain([glow::DEPTH_ATTACHMENT, glow::STENCIL_ATTACHMENT]);
+        for at in points {
+            let ty = gl.get_framebuffer_attachment_parameter_i32(
+                glow::DRAW_FRAMEBUFFER,
+                at,
+                glow::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+            );
+            if ty as u32 == glow::TEXTURE {
+                let name = gl.get_framebuffer_attachment_parameter_i32(
+                    glow::DRAW_FRAMEBUFFER,
+                    at,
+                    glow::FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
+                );
+                attached.push((at, name));
+            }
+        }
+        let active = gl.get_parameter_i32(glow::ACTIVE_TEXTURE);
+        let units = gl
+            .get_parameter_i32(glow::MAX_COMBINED_TEXTURE_IMAGE_UNITS)
+            .min(32);
+        let mut found = Vec::new();
+        for u in 0..units as u32 {
+            gl.active_texture(glow::TEXTURE0 + u);
+            let bound = gl.get_parameter_i32(glow::TEXTURE_BINDING_2D);
+            if bound == 0 {
+                continue;
+            }
+            for &(at, name) in &attached {
+                if name == bound {
+                    found.push(format!(
+                        "feedback loop: texture {bound} is bound to texture unit {u} and attached to the draw framebuffer {fb} at {at:#x}"
+                    ));
+                }
+            }
+        }
+        gl.active_texture(active as u32);
+        found
     }
 }
 

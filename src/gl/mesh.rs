@@ -61,8 +61,10 @@ impl Mesh {
         }
     }
 
-    /// glBindVertexArray + glDrawElements(GL_TRIANGLES, ...).
+    /// glBindVertexArray + glDrawElements(GL_TRIANGLES, ...). With GL
+    /// checks on, first looks for a feedback loop (gl/debug.rs).
     pub fn draw(&self) {
+        super::debug::check_feedback_before_draw(&self.gl);
         unsafe {
             self.gl.bind_vertex_array(Some(self.vao));
             self.gl

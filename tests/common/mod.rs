@@ -2,10 +2,9 @@
 //! rendering a scene, and comparing images with files written on failure.
 #![allow(dead_code)]
 
-use gloss::gl::program::Sources;
 use gloss::gl::{Backend, Headless};
 use gloss::image_compare::{self, Metrics, Tolerance};
-use gloss::renderer::{Output, Renderer};
+use gloss::renderer::{Output, render_scene};
 use gloss::scene::Scene;
 use image::RgbaImage;
 use std::path::{Path, PathBuf};
@@ -51,30 +50,18 @@ pub struct Rendered {
 /// Render `scene` at its size and read it back. Panics with the GL error
 /// messages if the frame raised any.
 pub fn render_with(ctx: &Headless, scene: &Scene, output: Output) -> Rendered {
-    let (w, h) = scene.render.size;
-    let mut r = Renderer::with_output(
-        &ctx.gl,
-        &ctx.debug,
-        scene,
-        &Sources::Embedded,
-        w as i32,
-        h as i32,
-        output,
-    )
-    .unwrap_or_else(|e| panic!("renderer for {}: {e:#}", scene.name));
-    r.render(&scene.camera.clone())
+    let r = render_scene(ctx, scene, output)
         .unwrap_or_else(|e| panic!("rendering {}: {e:#}", scene.name));
-    let image = r.read_image();
-    let linear = if output == Output::Linear32F {
-        r.read_linear()
-    } else {
-        Vec::new()
-    };
+    let (width, height) = scene.render.size;
     Rendered {
-        image,
-        linear,
-        width: w,
-        height: h,
+        image: r.read_image(),
+        linear: if output == Output::Linear32F {
+            r.read_linear()
+        } else {
+            Vec::new()
+        },
+        width,
+        height,
     }
 }
 

@@ -1,0 +1,42 @@
+// Reading the G-buffer in a lighting pass (notes 04 "Getting window coordinates
+// in shader"): the texture coordinate is the window coordinate divided by the
+// G-buffer's size, and the world position is rebuilt from the depth buffer.
+// Units: unit::GBUFFER_* in src/frame/uniforms.rs; layout: src/frame/gbuffer.rs.
+uniform sampler2D u_gbuffer_normal;     // normal.xyz, shininess
+uniform sampler2D u_gbuffer_albedo;     // diffuse albedo (linear)
+uniform sampler2D u_gbuffer_specular;   // specular colour (linear)
+uniform sampler2D u_gbuffer_depth;      // depth: the position is rebuilt from it
+uniform mat4 u_inverse_view_projection;
+
+struct Surface {
+    vec3 P;
+    vec3 N;
+    float shininess;
+    vec3 kd;
+    vec3 ks;
+    float depth;
+};
+
+vec2 gbuffer_uv() {
+    return gl_FragCoord.xy / textureSize(u_gbuffer_normal, 0).xy;
+}
+
+// World position from window uv and depth: NDC = (uv, depth) * 2 - 1, then
+// the inverse view-projection and the perspective divide undone.
+vec3 world_position(vec2 uv, float depth) {
+    vec4 ndc = vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0);
+    vec4 world = u_inverse_view_projection * ndc;
+    return world.xyz / world.w;
+}
+
+Surface read_gbuffer(vec2 uv) {
+    Surface s;
+    s.depth = texture(u_gbuffer_depth, uv).r;
+    vec4 ns = texture(u_gbuffer_normal, uv);
+    s.N = ns.xyz;
+    s.shininess = ns.w;
+    s.kd = texture(u_gbuffer_albedo, uv).rgb;
+    s.ks = texture(u_gbuffer_specular, uv).rgb;
+    s.P = world_position(uv, s.depth);
+    return s;
+}

@@ -1,0 +1,21 @@
+#version 330 core
+// Notes 01 §8.6.2 step 3, "Generate final image": a screen-sized triangle
+// that adds the ambient term to the accumulated light and encodes to sRGB.
+#include "common/gbuffer_read.glsl"
+#include "common/lighting_output.glsl"
+uniform sampler2D u_light;   // the accumulated light (HDR), unit::LIGHT
+uniform bool u_has_light;    // false: the frame has no lights, so no lighting pass ran
+uniform vec3 u_ambient;
+uniform vec3 u_background;
+out vec4 frag_color;
+
+void main() {
+    vec2 uv = gbuffer_uv();
+    float depth = texture(u_gbuffer_depth, uv).r;
+    if (depth == 1.0) {
+        frag_color = output_color(u_background);
+        return;
+    }
+    vec3 kd = texture(u_gbuffer_albedo, uv).rgb;
+    frag_color = output_color(u_ambient * kd + (u_has_light ? texture(u_light, uv).rgb : vec3(0.0)));
+}

@@ -1,0 +1,16 @@
+#version 330 core
+// "Our current deferred shader" (notes 04): for every pixel of the G-buffer,
+// for one light (u_light_id), shade. Drawn once per light with additive blending.
+#include "common/lighting.glsl"
+#include "common/gbuffer_read.glsl"
+uniform int u_light_id;
+uniform vec3 u_eye;
+out vec4 light_out;
+
+void main() {
+    vec2 uv = gbuffer_uv();
+    Surface s = read_gbuffer(uv);
+    if (s.depth == 1.0) discard;   // background: no surface here
+    vec3 V = normalize(u_eye - s.P);
+    light_out = vec4(phong(u_lights[u_light_id], s.P, s.N, V, s.kd, s.ks, s.shininess), 1.0);
+}

@@ -1,0 +1,21 @@
+#version 330 core
+// G-buffer pass: write the surface's data, no lighting.
+//   0: normal (world, unit) + shininess   RGBA16F
+//   1: diffuse albedo                     SRGB8_ALPHA8 (GL_FRAMEBUFFER_SRGB on)
+//   2: specular colour                    SRGB8_ALPHA8
+//   depth: the depth buffer itself; position is rebuilt from it.
+#include "common/normals.glsl"
+#include "common/material.glsl"
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+
+layout(location = 0) out vec4 g_normal_shininess;
+layout(location = 1) out vec4 g_albedo;
+layout(location = 2) out vec4 g_specular;
+
+void main() {
+    g_normal_shininess = vec4(safe_normal(v_normal, v_position), u_shininess);
+    g_albedo = vec4(material_diffuse(v_uv), 1.0);
+    g_specular = vec4(u_specular, 1.0);
+}

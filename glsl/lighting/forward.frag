@@ -1,0 +1,27 @@
+#version 330 core
+// Forward rendering (notes 04): for every fragment, for every light, shade.
+#include "common/lighting.glsl"
+#include "common/normals.glsl"
+#include "common/material.glsl"
+#include "common/lighting_output.glsl"
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+
+uniform int u_light_count;
+uniform vec3 u_eye;
+uniform vec3 u_ambient;
+
+out vec4 frag_color;
+
+void main() {
+    vec3 N = safe_normal(v_normal, v_position);
+    vec3 V = normalize(u_eye - v_position);
+    vec3 kd = material_diffuse(v_uv);
+    vec3 c = u_ambient * kd;
+    for (int i = 0; i < u_light_count; ++i) {
+        c += phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+    }
+    frag_color = output_color(c);
+}

@@ -1,0 +1,15 @@
+#version 330 core
+// Gouraud shading: the light was computed per vertex; only the material is per fragment.
+#include "common/lighting_output.glsl"
+#include "common/material.glsl"
+in vec3 v_diffuse_light;
+in vec3 v_specular_light;
+in vec2 v_uv;
+uniform vec3 u_ambient;
+out vec4 frag_color;
+
+void main() {
+    vec3 kd = material_diffuse(v_uv);
+    vec3 c = kd * (u_ambient + v_diffuse_light) + u_specular * v_specular_light;
+    frag_color = output_color(c);
+}

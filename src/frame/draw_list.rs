@@ -1,0 +1,141 @@
+//! The scene's objects on the GPU: each object's mesh, model and normal
+//! matrices and material, with the meshes and textures they share uploaded
+//! once. A geometry pass (forward, G-buffer, combine) loops over `items`,
+//! making its own GL state changes per object (glFrontFace, the diffuse
+//! texture) in its own file; this module only sets uniforms.
+
+use crate::geometry::{self, MeshData};
+use crate::gl::Gl;
+use crate::gl::mesh::Mesh;
+use crate::gl::program::Program;
+use crate::gl::texture::{Sampling, Texture};
+use crate::math;
+use crate::scene::{MeshSource, Scene};
+use anyhow::Result;
+use glam::{Mat3, Mat4, Vec3};
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+/// One object ready to draw.
+pub struct DrawItem {
+    pub mesh: usize,
+    pub model: Mat4,
+    pub normal_matrix: Mat3,
+    /// The model matrix mirrors (negative determinant): its triangles wind
+    /// clockwise on screen, so a pass draws it with glFrontFace(GL_CW).
+    pub mirrored: bool,
+    pub diffuse: Vec3,
+    pub specular: Vec3,
+    pub shininess: f32,
+    pub texture: Option<usize>,
+}
+
+impl DrawItem {
+    /// The winding of this object's front faces: GL_CW for a mirroring model matrix.
+    pub fn front_face(&self) -> u32 {
+        if self.mirrored { glow::CW } else { glow::CCW }
+    }
+}
+
+/// Every object of the scene, with the meshes and textures they share.
+pub struct DrawList {
+    pub items: Vec<DrawItem>,
+    pub meshes: Vec<Mesh>,
+    pub textures: Vec<Texture>,
+}
+
+impl DrawList {
+    pub fn new(gl: &Gl, scene: &Scene) -> Result<DrawList> {
+        let mut meshes = Vec::new();
+        let mut mesh_index: HashMap<MeshSource, usize> = HashMap::new();
+        let mut textures = Vec::new();
+        let mut texture_index: HashMap<PathBuf, usize> = HashMap::new();
+        let mut items = Vec::new();
+        for o in &scene.objects {
+            let mesh = match mesh_index.get(&o.mesh) {
+                Some(&i) => i,
+                None => {
+                    meshes.push(Mesh::upload(gl, &mesh_data(&o.mesh)?)?);
+                    mesh_index.insert(o.mesh.clone(), meshes.len() - 1);
+                    meshes.len() - 1
+                }
+            };
+            let m = &scene.materials[o.material];
+            let texture = match &m.diffuse_texture {
+                None => None,
+                Some(p) => Some(match texture_index.get(p) {
+                    Some(&i) => i,
+                    None => {
+                        textures.push(Texture::load(gl, p, true, Sampling::TRILINEAR_REPEAT)?);
+                        texture_index.insert(p.clone(), textures.len() - 1);
+                        textures.len() - 1
+                    }
+                }),
+            };
+            items.push(DrawItem {
+                mesh,
+                model: o.model,
+                normal_matrix: normal_matrix(&o.model),
+                mirrored: Mat3::from_mat4(o.model).determinant() < 0.0,
+                diffuse: m.diffuse,
+                specular: m.specular,
+                shininess: m.shininess,
+                texture,
+            });
+        }
+        Ok(DrawList {
+            items,
+            meshes,
+            textures,
+        })
+    }
+
+    pub fn mesh(&self, d: &DrawItem) -> &Mesh {
+        &self.meshes[d.mesh]
+    }
+
+    /// The object's diffuse texture, if its material has one.
+    pub fn texture(&self, d: &DrawItem) -> Option<glow::Texture> {
+        d.texture.map(|t| self.textures[t].id)
+    }
+
+    /// glUniform* for one object's transform and material (program `p` in use).
+    pub fn set_object_uniforms(&self, p: &Program, d: &DrawItem) {
+        p.set_mat4("u_model", &d.model);
+        p.set_mat3("u_normal_matrix", &d.normal_matrix);
+        p.set_f32("u_mirror", if d.mirrored { -1.0 } else { 1.0 });
+        p.set_vec3("u_diffuse", d.diffuse);
+        p.set_vec3("u_specular", d.specular);
+        p.set_f32("u_shininess", d.shininess);
+        p.set_bool("u_has_diffuse_texture", d.texture.is_some());
+    }
+}
+
+/// The normal matrix (notes 01 §8.1.1): transpose(inverse(mat3(model))).
+/// For a singular model matrix (a zero scale flattens the object) the
+/// inverse does not exist; the cofactor matrix, det x inverse-transpose, is
+/// still defined and gives the flattened surface's normal, so use that.
+pub fn normal_matrix(model: &Mat4) -> Mat3 {
+    match math::normal_matrix(model) {
+        Some(n) => n,
+        None => {
+            let m = Mat3::from_mat4(*model);
+            let (c0, c1, c2) = (m.x_axis, m.y_axis, m.z_axis);
+            // cofactor(M) has columns c1 x c2, c2 x c0, c0 x c1.
+            Mat3::from_cols(c1.cross(c2), c2.cross(c0), c0.cross(c1))
+        }
+    }
+}
+
+fn mesh_data(source: &MeshSource) -> Result<MeshData> {
+    Ok(match source {
+        MeshSource::Sphere => geometry::uv_sphere(32, 64),
+        MeshSource::Icosphere => geometry::icosphere(3),
+        MeshSource::Cube => geometry::cube(),
+        MeshSource::Plane => geometry::plane(2.0, 2.0, 1),
+        MeshSource::Cylinder => geometry::cylinder(48),
+        MeshSource::Cone => geometry::cone(48),
+        MeshSource::Torus => geometry::torus(1.0, 0.35, 64, 24),
+        MeshSource::Obj(path) => geometry::load_obj(path)?,
+    })
+}

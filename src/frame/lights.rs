@@ -1,0 +1,219 @@
+//! What each light of the frame derives from the scene, computed once here
+//! and read by everything that needs it: the light-volume radius (notes 04,
+//! "Calculating radius"), the volume that encloses it, and the std140
+//! `Lights` block the shaders read (glsl/common/lighting.glsl).
+//!
+//! The radius is where the attenuated brightest channel falls to the cutoff
+//! (src/lighting/attenuation.rs solves it without cancellation). The plan
+//! counts the volumes, the light-volume passes draw them, and the shaders
+//! read the same radius from the uniform block.
+
+use crate::lighting::attenuation;
+use crate::scene::{Light, LightKind, Scene};
+use glam::{Mat4, Quat, Vec3, Vec4};
+
+/// Bytes per light in the std140 `Lights` block (four vec4).
+pub const LIGHT_STRIDE: usize = 64;
+
+/// How many lights fit in a uniform block of `max_block_bytes` (at most 1024).
+pub fn max_lights(max_block_bytes: i32) -> usize {
+    (max_block_bytes.max(16384) as usize / LIGHT_STRIDE).min(1024)
+}
+
+/// The mesh that bounds a light's reach, with its model matrix.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Volume {
+    /// A point light: the unit volume sphere scaled to the radius.
+    Sphere(Mat4),
+    /// A spot light: the unit cone (half-angle 45°, apex at the origin, axis
+    /// -Z, height 1) turned to the light's direction, scaled to its range
+    /// and outer angle.
+    Cone(Mat4),
+    /// A directional light, or one whose attenuation never reaches the
+    /// cutoff (Kl = Kq = 0): every pixel, one full-screen triangle.
+    FullScreen,
+}
+
+/// One light's derived values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameLight {
+    /// Distance at which the light falls to the cutoff; `None` when there is
+    /// no finite one (directional, or Kl = Kq = 0).
+    pub radius: Option<f32>,
+    pub volume: Volume,
+}
+
+/// The derived values of every light of a scene, in the scene's order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameLights {
+    pub lights: Vec<FrameLight>,
+}
+
+impl FrameLights {
+    /// Compute each light's radius at the scene's cutoff and its volume.
+    pub fn new(scene: &Scene) -> FrameLights {
+        let cutoff = scene.render.cutoff;
+        let lights = scene
+            .lights
+            .iter()
+            .map(|l| {
+                let radius = radius(l, cutoff);
+                FrameLight {
+                    radius,
+                    volume: volume(l, radius),
+                }
+            })
+            .collect();
+        FrameLights { lights }
+    }
+
+    pub fn len(&self) -> usize {
+        self.lights.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.lights.is_empty()
+    }
+
+    /// How many lights draw a sphere, a cone, a full-screen triangle.
+    pub fn count_volumes(&self) -> (usize, usize, usize) {
+        let count = |f: fn(&Volume) -> bool| self.lights.iter().filter(|l| f(&l.volume)).count();
+        (
+            count(|v| matches!(v, Volume::Sphere(_))),
+            count(|v| matches!(v, Volume::Cone(_))),
+            count(|v| matches!(v, Volume::FullScreen)),
+        )
+    }
+
+    /// Pack the lights as glsl/common/lighting.glsl's `struct Light` (std140):
+    /// position + type, direction + radius (-1: none), colour x intensity +
+    /// cos(outer), (Kc, Kl, Kq) + cos(inner).
+    pub fn pack(&self, scene: &Scene) -> Vec<u8> {
+        let mut out = Vec::with_capacity(scene.lights.len() * LIGHT_STRIDE);
+        for (l, f) in scene.lights.iter().zip(&self.lights) {
+            let ty = match l.kind {
+                LightKind::Directional => 0.0,
+                LightKind::Point => 1.0,
+                LightKind::Spot => 2.0,
+            };
+            let c = l.radiance();
+            let v = [
+                Vec4::new(l.position.x, l.position.y, l.position.z, ty),
+                Vec4::new(
+                    l.direction.x,
+                    l.direction.y,
+                    l.direction.z,
+                    f.radius.unwrap_or(-1.0),
+                ),
+                Vec4::new(c.x, c.y, c.z, l.outer_angle.to_radians().cos()),
+                Vec4::new(l.kc, l.kl, l.kq, l.inner_angle.to_radians().cos()),
+            ];
+            for x in v {
+                for f in x.to_array() {
+                    out.extend_from_slice(&f.to_ne_bytes());
+                }
+            }
+        }
+        out
+    }
+}
+
+/// The light-volume radius at `cutoff` of the brightest channel (notes 04).
+pub fn radius(light: &Light, cutoff: f32) -> Option<f32> {
+    match light.kind {
+        LightKind::Directional => None,
+        LightKind::Point | LightKind::Spot => {
+            attenuation::light_volume_radius(light.kc, light.kl, light.kq, light.i_max(), cutoff)
+        }
+    }
+}
+
+fn volume(light: &Light, radius: Option<f32>) -> Volume {
+    match (light.kind, radius) {
+        (LightKind::Point, Some(r)) => Volume::Sphere(
+            Mat4::from_translation(light.position) * Mat4::from_scale(Vec3::splat(r)),
+        ),
+        (LightKind::Spot, Some(r)) => {
+            // The unit cone has half-angle 45° (radius 1 at height 1): scale
+            // its width by tan(outer) and its length by the range, then turn
+            // -Z onto the light's direction.
+            let w = r * light.outer_angle.to_radians().tan();
+            let turn = Quat::from_rotation_arc(Vec3::NEG_Z, light.direction);
+            Volume::Cone(Mat4::from_scale_rotation_translation(
+                Vec3::new(w, w, r),
+                turn,
+                light.position,
+            ))
+        }
+        _ => Volume::FullScreen,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spot() -> Light {
+        Light {
+            kind: LightKind::Spot,
+            position: Vec3::new(1.0, 2.0, 3.0),
+            direction: Vec3::NEG_Y,
+            color: Vec3::ONE,
+            intensity: 2.0,
+            kc: 1.0,
+            kl: 0.09,
+            kq: 0.032,
+            inner_angle: 20.0,
+            outer_angle: 30.0,
+            shadow: false,
+        }
+    }
+
+    #[test]
+    fn std140_light_is_64_bytes() {
+        let l = spot();
+        let f = FrameLight {
+            radius: radius(&l, 5.0 / 256.0),
+            volume: Volume::FullScreen,
+        };
+        let mut scene = crate::scene::Scene::parse(
+            "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n",
+            std::path::Path::new("t.toml"),
+        )
+        .unwrap();
+        scene.lights = vec![l.clone(), l];
+        let lights = FrameLights { lights: vec![f, f] };
+        let b = lights.pack(&scene);
+        assert_eq!(b.len(), 128);
+        let f = |i: usize| f32::from_ne_bytes(b[i * 4..i * 4 + 4].try_into().unwrap());
+        assert_eq!((f(0), f(1), f(2), f(3)), (1.0, 2.0, 3.0, 2.0));
+        assert!(f(7) > 0.0, "the radius rides in direction.w");
+        assert_eq!(f(8), 2.0); // colour x intensity
+        assert!((f(11) - 30f32.to_radians().cos()).abs() < 1e-7);
+        assert_eq!(f(13), 0.09);
+    }
+
+    #[test]
+    fn directional_and_unbounded_lights_are_full_screen() {
+        let mut l = spot();
+        l.kind = LightKind::Directional;
+        assert_eq!(radius(&l, 0.02), None);
+        let mut l = spot();
+        l.kl = 0.0;
+        l.kq = 0.0;
+        assert_eq!(radius(&l, 0.02), None);
+        assert_eq!(volume(&l, None), Volume::FullScreen);
+    }
+
+    #[test]
+    fn spot_cone_reaches_the_radius_along_the_axis() {
+        let l = spot();
+        let r = radius(&l, 5.0 / 256.0).unwrap();
+        let Volume::Cone(m) = volume(&l, Some(r)) else {
+            panic!("a spot light gets a cone")
+        };
+        // The cone's base centre (0, 0, -1) lands r along the light's direction.
+        let tip = m.transform_point3(Vec3::new(0.0, 0.0, -1.0));
+        assert!((tip - (l.position + l.direction * r)).length() < 1e-4 * r);
+    }
+}

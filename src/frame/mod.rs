@@ -1,0 +1,25 @@
+//! The frame: what every technique uses, and nothing above it.
+//!
+//! - `plan`: which passes a scene's frame runs and which targets they use,
+//!   put together from the techniques' own lists (`gloss plan` prints it).
+//! - `technique`: what a technique registers (its passes, targets, programs).
+//! - `draw_list`: the scene's objects on the GPU, ready to draw.
+//! - `lights`: what each light derives from the scene (volume radius, volume
+//!   mesh) and the std140 block the shaders read: computed once, here.
+//! - `uniforms`: per-frame values and the texture units, named once.
+//! - `gbuffer`: the G-buffer's layout, written by one technique and read by many.
+//! - `targets`: the render targets the plan names, allocated and sized.
+//! - `meshes`: the meshes every screen or volume pass draws.
+//! - `timing`: pass times around glFinish.
+
+pub mod draw_list;
+pub mod gbuffer;
+pub mod lights;
+pub mod meshes;
+pub mod plan;
+pub mod targets;
+pub mod technique;
+pub mod timing;
+pub mod uniforms;
+
+pub use technique::{Frame, Programs, RunPasses, Technique};

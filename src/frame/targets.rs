@@ -1,0 +1,136 @@
+//! Render targets: the plan describes them (`TargetDesc`), `Targets`
+//! allocates exactly those, at the frame's size, and passes find them by
+//! name. A target may attach another target's depth-stencil texture (the
+//! light accumulation target tests its volumes against the G-buffer's depth),
+//! so targets are made in the plan's order.
+
+use crate::gl::Gl;
+use crate::gl::framebuffer::Framebuffer;
+use crate::gl::texture::Texture;
+use anyhow::{Result, anyhow};
+
+/// The final image: the window shows it, `gloss render` writes it.
+pub const OUTPUT: &str = "output";
+/// Where lighting passes add up light (HDR, black clear).
+pub const LIGHT_ACCUMULATION: &str = "light_accumulation";
+
+/// A target's depth attachment.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Depth {
+    None,
+    /// Its own depth-stencil texture of this format.
+    Own(u32),
+    /// The depth-stencil texture of the named (earlier) target.
+    SharedWith(&'static str),
+}
+
+/// A render target as the plan names it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TargetDesc {
+    pub name: &'static str,
+    /// (attachment name, GL internal format), GL_COLOR_ATTACHMENT0 first.
+    pub colors: Vec<(&'static str, u32)>,
+    pub depth: Depth,
+}
+
+impl TargetDesc {
+    /// The final image: 8-bit colour holding sRGB-encoded values, and depth.
+    pub fn output() -> TargetDesc {
+        TargetDesc {
+            name: OUTPUT,
+            colors: vec![("color", glow::RGBA8)],
+            depth: Depth::Own(glow::DEPTH24_STENCIL8),
+        }
+    }
+
+    /// Every attachment as "name:FORMAT", depth last.
+    pub fn attachments(&self) -> Vec<String> {
+        let mut v: Vec<String> = self
+            .colors
+            .iter()
+            .map(|(n, f)| format!("{n}:{}", format_name(*f)))
+            .collect();
+        match self.depth {
+            Depth::None => {}
+            Depth::Own(f) => v.push(format!("depth_stencil:{}", format_name(f))),
+            Depth::SharedWith(t) => v.push(format!("depth_stencil:{t}'s")),
+        }
+        v
+    }
+}
+
+/// The GL name of an internal format gloss uses.
+pub fn format_name(format: u32) -> &'static str {
+    match format {
+        glow::RGBA8 => "RGBA8",
+        glow::SRGB8_ALPHA8 => "SRGB8_ALPHA8",
+        glow::RGBA16F => "RGBA16F",
+        glow::RGBA32F => "RGBA32F",
+        glow::DEPTH24_STENCIL8 => "DEPTH24_STENCIL8",
+        glow::DEPTH_COMPONENT24 => "DEPTH_COMPONENT24",
+        glow::DEPTH_COMPONENT32F => "DEPTH_COMPONENT32F",
+        _ => "(unnamed format)",
+    }
+}
+
+/// The allocated targets of one plan.
+pub struct Targets {
+    targets: Vec<Framebuffer>,
+}
+
+impl Targets {
+    /// Allocate every target of `descs`, `width` x `height`, in order.
+    pub fn new(gl: &Gl, descs: &[TargetDesc], width: i32, height: i32) -> Result<Targets> {
+        let mut targets: Vec<Framebuffer> = Vec::with_capacity(descs.len());
+        for d in descs {
+            let mut colors = Vec::with_capacity(d.colors.len());
+            for &(_, format) in &d.colors {
+                colors.push(Texture::render_target(gl, width, height, format)?);
+            }
+            let (own, shared) = match d.depth {
+                Depth::None => (None, None),
+                Depth::Own(format) => (
+                    Some(Texture::render_target(gl, width, height, format)?),
+                    None,
+                ),
+                Depth::SharedWith(other) => {
+                    let fb = targets.iter().find(|t| t.name == other).ok_or_else(|| {
+                        anyhow!("target {} shares the depth of {other}, which comes later or not at all", d.name)
+                    })?;
+                    let depth = fb.depth_stencil.as_ref().ok_or_else(|| {
+                        anyhow!(
+                            "target {} shares the depth of {other}, which has none",
+                            d.name
+                        )
+                    })?;
+                    (None, Some(depth))
+                }
+            };
+            let fb = Framebuffer::with_attachments(gl, d.name, colors, own, shared)?;
+            targets.push(fb);
+        }
+        Ok(Targets { targets })
+    }
+
+    /// The target named `name`, if the plan has it.
+    pub fn find(&self, name: &str) -> Option<&Framebuffer> {
+        self.targets.iter().find(|t| t.name == name)
+    }
+
+    /// The target named `name`; the plan guarantees that a pass's targets exist.
+    pub fn get(&self, name: &str) -> &Framebuffer {
+        self.find(name)
+            .unwrap_or_else(|| panic!("the frame plan has no target named {name}"))
+    }
+
+    /// Free every target (the ones sharing a depth texture first).
+    pub fn clear(&mut self) {
+        while self.targets.pop().is_some() {}
+    }
+}
+
+impl Drop for Targets {
+    fn drop(&mut self) {
+        self.clear();
+    }
+}

@@ -1,0 +1,76 @@
+//! What a technique registers, and what its passes are given when they run.
+//!
+//! A technique is one file under src/techniques/<chapter>/, named as the
+//! notes name it. It exports one `Technique` value (its registration) that
+//! src/techniques/mod.rs lists in frame order. From a scene, the technique
+//! says which passes it adds and which targets they need (no GL: `gloss
+//! plan` calls these); the renderer builds the technique's programs once
+//! (`create`) and calls `run` for each of its passes in the plan.
+//! docs/adding-a-technique.md walks through adding one.
+
+use crate::frame::draw_list::DrawList;
+use crate::frame::lights::FrameLights;
+use crate::frame::meshes::FrameMeshes;
+use crate::frame::plan::Pass;
+use crate::frame::targets::{TargetDesc, Targets};
+use crate::frame::uniforms::FrameUniforms;
+use crate::gl::Gl;
+use crate::gl::program::{Program, Sources};
+use crate::scene::Scene;
+use anyhow::Result;
+
+/// A technique's registration.
+pub struct Technique {
+    /// As the notes name it, and as its file is named (`light_volumes`).
+    pub name: &'static str,
+    /// The notes section it implements ("notes 04, Light Volumes").
+    pub notes: &'static str,
+    /// Its source file, `file!()`.
+    pub file: &'static str,
+    /// Its shaders under glsl/.
+    pub shaders: &'static [&'static str],
+    /// A scene under scenes/ that shows it.
+    pub scene: &'static str,
+    /// Its page under docs/.
+    pub docs: &'static str,
+    /// The passes it adds to a frame of `scene` (none: it does not run).
+    pub passes: fn(&Scene, &FrameLights) -> Vec<Pass>,
+    /// The targets those passes need besides the output (none when it does not run).
+    pub targets: fn(&Scene, &FrameLights) -> Vec<TargetDesc>,
+    /// Build its programs.
+    pub create: fn(&Programs) -> Result<Box<dyn RunPasses>>,
+}
+
+/// A technique with its programs built: runs one of its passes.
+pub trait RunPasses {
+    /// Run `pass` (one of those `passes` returned; `pass.step` says which).
+    /// A pass sets the GL state it needs and restores it before returning.
+    fn run(&self, pass: &Pass, frame: &Frame);
+}
+
+/// What `create` builds programs with.
+pub struct Programs<'a> {
+    pub gl: &'a Gl,
+    pub sources: &'a Sources,
+    /// `#define`s every program gets (MAX_LIGHTS).
+    pub defines: &'a [(&'a str, String)],
+}
+
+impl Programs<'_> {
+    /// Compile and link `stages` = [(GL_VERTEX_SHADER, "deferred/gbuffer.vert"), ...].
+    pub fn build(&self, stages: &[(u32, &str)]) -> Result<Program> {
+        Program::new(self.gl, self.sources, stages, self.defines)
+    }
+}
+
+/// What a pass is given: the scene, this frame's values, and the GL objects
+/// the renderer owns.
+pub struct Frame<'a> {
+    pub gl: &'a glow::Context,
+    pub scene: &'a Scene,
+    pub uniforms: &'a FrameUniforms,
+    pub draws: &'a DrawList,
+    pub lights: &'a FrameLights,
+    pub targets: &'a Targets,
+    pub meshes: &'a FrameMeshes,
+}

@@ -1,0 +1,39 @@
+//! Per-frame values every pass reads, and the texture units, named once.
+
+use glam::{Mat4, Vec3};
+
+/// Per-frame values every pass needs.
+pub struct FrameUniforms {
+    pub view: Mat4,
+    pub projection: Mat4,
+    pub view_projection: Mat4,
+    pub inverse_view_projection: Mat4,
+    pub eye: Vec3,
+    pub light_count: i32,
+    pub lights_ubo: glow::Buffer,
+    /// The final image is stored sRGB-encoded (8-bit output) rather than linear.
+    pub output_srgb: bool,
+    /// The background as written to the output (sRGB-encoded when the output is).
+    pub clear_color: Vec3,
+}
+
+/// Texture units. A pass binds a texture with
+/// `glActiveTexture(GL_TEXTURE0 + unit)` and tells its sampler with
+/// `glUniform1i(sampler, unit)`; GLSL 3.30 has no `layout(binding = n)`, so
+/// these numbers appear nowhere else.
+pub mod unit {
+    /// Geometry passes: the material's diffuse texture (`u_diffuse_texture`).
+    pub const DIFFUSE_TEXTURE: u32 = 0;
+    /// Lighting passes read the G-buffer (`glsl/common/gbuffer_read.glsl`).
+    pub const GBUFFER_NORMAL: u32 = 0;
+    pub const GBUFFER_ALBEDO: u32 = 1;
+    pub const GBUFFER_SPECULAR: u32 = 2;
+    pub const GBUFFER_DEPTH: u32 = 3;
+    /// The accumulated light (`u_light`; the light pre-pass's diffuse light).
+    pub const LIGHT: u32 = 4;
+    /// The light pre-pass's specular light (`u_specular_light`).
+    pub const SPECULAR_LIGHT: u32 = 5;
+}
+
+/// The uniform-block binding point of the `Lights` block (glsl/common/lighting.glsl).
+pub const LIGHTS_BINDING: u32 = 0;

@@ -1,0 +1,106 @@
+//! The Phong reflection model of notes 01 §8.3 on the CPU: the same formula
+//! as glsl/common/lighting.glsl, written once more so that tests can compare
+//! rendered pixels with `shade` below. Also the sRGB transfer functions the
+//! output uses, and (in `attenuation`) notes 04's attenuation and light-volume
+//! radius.
+
+pub mod attenuation;
+
+use crate::scene::{Light, LightKind, Material};
+use glam::Vec3;
+
+/// GLSL's smoothstep.
+pub fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Attenuation x spot factor and the unit vector to the light (glsl `light_factor`).
+pub fn light_factor(l: &Light, p: Vec3) -> (f32, Vec3) {
+    match l.kind {
+        LightKind::Directional => (1.0, -l.direction),
+        _ => {
+            let to = l.position - p;
+            let d = to.length();
+            let dir = to / d.max(1e-20);
+            let mut att = 1.0 / (l.kc + l.kl * d + l.kq * d * d);
+            if l.kind == LightKind::Spot {
+                let c = (-dir).dot(l.direction);
+                att *= smoothstep(
+                    l.outer_angle.to_radians().cos(),
+                    l.inner_angle.to_radians().cos(),
+                    c,
+                );
+            }
+            (att, dir)
+        }
+    }
+}
+
+/// Diffuse and specular light from one light (before the material), as glsl `phong_light`.
+pub fn phong_light(l: &Light, p: Vec3, n: Vec3, v: Vec3, shininess: f32) -> (Vec3, Vec3) {
+    let (f, dir) = light_factor(l, p);
+    let i = l.radiance() * f;
+    let n_dot_l = n.dot(dir).max(0.0);
+    let h = (dir + v).normalize();
+    let s = if n_dot_l > 0.0 {
+        n.dot(h).max(0.0).powf(shininess)
+    } else {
+        0.0
+    };
+    (i * n_dot_l, i * s)
+}
+
+/// The colour of a surface point: ambient + the sum over lights (linear RGB).
+pub fn shade(
+    lights: &[Light],
+    ambient: Vec3,
+    m: &Material,
+    kd: Vec3,
+    p: Vec3,
+    n: Vec3,
+    eye: Vec3,
+) -> Vec3 {
+    let v = (eye - p).normalize();
+    let mut c = ambient * kd;
+    for l in lights {
+        let (d, s) = phong_light(l, p, n, v, m.shininess);
+        c += kd * d + m.specular * s;
+    }
+    c
+}
+
+/// sRGB encode one linear channel (clamped), exactly as glsl `srgb_encode`.
+pub fn srgb_encode(c: f32) -> f32 {
+    let c = c.clamp(0.0, 1.0);
+    if c < 0.003_130_8 {
+        c * 12.92
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+/// sRGB decode one channel.
+pub fn srgb_decode(c: f32) -> f32 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn srgb_round_trip_and_known_values() {
+        assert_eq!(srgb_encode(0.0), 0.0);
+        assert!((srgb_encode(1.0) - 1.0).abs() < 1e-6);
+        assert!((srgb_encode(0.5) * 255.0 - 187.5).abs() < 0.6);
+        for i in 0..=100 {
+            let x = i as f32 / 100.0;
+            assert!((srgb_decode(srgb_encode(x)) - x).abs() < 1e-5);
+        }
+    }
+}

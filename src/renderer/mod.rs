@@ -1,0 +1,239 @@
+//! The renderer: uploads a scene's meshes, textures and lights, allocates
+//! the targets its frame plan names, builds the programs of the techniques
+//! the plan uses, and each frame runs the plan's passes in order, one line
+//! each. What a pass does lives in its technique's file (src/techniques/).
+
+mod output;
+
+pub use output::Output;
+
+use crate::frame::draw_list::DrawList;
+use crate::frame::lights::{FrameLights, LIGHT_STRIDE, max_lights};
+use crate::frame::meshes::FrameMeshes;
+use crate::frame::plan::{FramePlan, Pass};
+use crate::frame::targets::{OUTPUT, TargetDesc, Targets};
+use crate::frame::timing::{PassTimer, PassTimes};
+use crate::frame::uniforms::FrameUniforms;
+use crate::frame::{Frame, Programs, RunPasses};
+use crate::gl::buffer::Buffer;
+use crate::gl::debug::DebugLog;
+use crate::gl::framebuffer::Framebuffer;
+use crate::gl::program::Sources;
+use crate::gl::{Gl, Headless};
+use crate::lighting;
+use crate::scene::{Camera, Scene};
+use crate::techniques;
+use anyhow::{Result, bail};
+use glow::HasContext;
+
+pub struct Renderer {
+    gl: Gl,
+    debug: DebugLog,
+    pub scene: Scene,
+    pub plan: FramePlan,
+    lights: FrameLights,
+    pub width: i32,
+    pub height: i32,
+    pub output_kind: Output,
+    targets: Targets,
+    draws: DrawList,
+    lights_ubo: Buffer,
+    meshes: FrameMeshes,
+    /// The programs of each registered technique the plan uses, by registry index.
+    techniques: Vec<Option<Box<dyn RunPasses>>>,
+    /// Measure each pass with glFinish + the CPU clock.
+    pub timing: bool,
+    pub last_times: PassTimes,
+}
+
+impl Renderer {
+    pub fn new(
+        gl: &Gl,
+        debug: &DebugLog,
+        scene: &Scene,
+        sources: &Sources,
+        width: i32,
+        height: i32,
+    ) -> Result<Renderer> {
+        Self::with_output(gl, debug, scene, sources, width, height, Output::Srgb8)
+    }
+
+    pub fn with_output(
+        gl: &Gl,
+        debug: &DebugLog,
+        scene: &Scene,
+        sources: &Sources,
+        width: i32,
+        height: i32,
+        output_kind: Output,
+    ) -> Result<Renderer> {
+        let max_block = unsafe { gl.get_parameter_i32(glow::MAX_UNIFORM_BLOCK_SIZE) };
+        let max_lights = max_lights(max_block);
+        if scene.lights.len() > max_lights {
+            bail!(
+                "{}: {} lights, but this GL's uniform blocks hold at most {max_lights} (GL_MAX_UNIFORM_BLOCK_SIZE = {max_block})",
+                scene.path.display(),
+                scene.lights.len()
+            );
+        }
+        let lights = FrameLights::new(scene);
+        let plan = FramePlan::new(scene, &lights, techniques::ALL);
+        let targets = Targets::new(gl, &target_descs(&plan, output_kind), width, height)?;
+        let lights_ubo = Buffer::new(
+            gl,
+            glow::UNIFORM_BUFFER,
+            max_lights * LIGHT_STRIDE,
+            glow::DYNAMIC_DRAW,
+        )?;
+        let defines = [("MAX_LIGHTS", max_lights.to_string())];
+        let programs = Programs {
+            gl,
+            sources,
+            defines: &defines,
+        };
+        let mut built: Vec<Option<Box<dyn RunPasses>>> = Vec::new();
+        built.resize_with(techniques::ALL.len(), || None);
+        for pass in &plan.passes {
+            if built[pass.technique].is_none() {
+                built[pass.technique] = Some((techniques::ALL[pass.technique].create)(&programs)?);
+            }
+        }
+        let mut r = Renderer {
+            gl: gl.clone(),
+            debug: debug.clone(),
+            scene: scene.clone(),
+            plan,
+            lights,
+            width,
+            height,
+            output_kind,
+            targets,
+            draws: DrawList::new(gl, scene)?,
+            lights_ubo,
+            meshes: FrameMeshes::new(gl)?,
+            techniques: built,
+            timing: false,
+            last_times: PassTimes::default(),
+        };
+        r.upload_lights();
+        debug.check(gl, "renderer set-up")?;
+        Ok(r)
+    }
+
+    /// Write the scene's lights into the uniform buffer.
+    fn upload_lights(&mut self) {
+        let bytes = self.lights.pack(&self.scene);
+        if !bytes.is_empty() {
+            self.lights_ubo.write(&bytes);
+        }
+    }
+
+    /// Reallocate the targets at a new size (nothing happens for the same
+    /// size, or for 0 x 0, a minimised window).
+    pub fn resize(&mut self, width: i32, height: i32) -> Result<()> {
+        if width < 1 || height < 1 || (width, height) == (self.width, self.height) {
+            return Ok(());
+        }
+        self.targets.clear();
+        self.targets = Targets::new(
+            &self.gl,
+            &target_descs(&self.plan, self.output_kind),
+            width,
+            height,
+        )?;
+        self.width = width;
+        self.height = height;
+        Ok(())
+    }
+
+    /// The finished frame (colour attachment 0).
+    pub fn output(&self) -> &Framebuffer {
+        self.targets.get(OUTPUT)
+    }
+
+    pub fn frame_uniforms(&self, camera: &Camera) -> FrameUniforms {
+        let view = camera.view();
+        let projection = camera.projection(self.width as f32 / self.height as f32);
+        let vp = projection * view;
+        let srgb = self.output_kind == Output::Srgb8;
+        let bg = self.scene.render.background;
+        FrameUniforms {
+            view,
+            projection,
+            view_projection: vp,
+            inverse_view_projection: vp.inverse(),
+            eye: camera.eye,
+            light_count: self.scene.lights.len() as i32,
+            lights_ubo: self.lights_ubo.id,
+            output_srgb: srgb,
+            clear_color: if srgb {
+                bg.map(lighting::srgb_encode)
+            } else {
+                bg
+            },
+        }
+    }
+
+    /// Run the frame plan with the given camera into `output()`.
+    pub fn render(&mut self, camera: &Camera) -> Result<()> {
+        self.render_inspected(camera, &mut |_| {})
+    }
+
+    /// `render`, calling `after_pass` after each pass (tests inspect the GL
+    /// state there; the demo's pass inspector will too).
+    pub fn render_inspected(
+        &mut self,
+        camera: &Camera,
+        after_pass: &mut dyn FnMut(&Pass),
+    ) -> Result<()> {
+        let uniforms = self.frame_uniforms(camera);
+        let frame = Frame {
+            gl: &self.gl,
+            scene: &self.scene,
+            uniforms: &uniforms,
+            draws: &self.draws,
+            lights: &self.lights,
+            targets: &self.targets,
+            meshes: &self.meshes,
+        };
+        let mut timer = PassTimer::new(&self.gl, self.timing);
+        for pass in &self.plan.passes {
+            let technique = self.techniques[pass.technique].as_ref();
+            technique.expect("built for its pass").run(pass, &frame);
+            timer.mark(pass.name);
+            after_pass(pass);
+        }
+        self.last_times = timer.finish();
+        self.debug.check(&self.gl, "the frame")?;
+        Ok(())
+    }
+}
+
+/// The plan's targets, with the output's colour format as `output` asks.
+fn target_descs(plan: &FramePlan, output: Output) -> Vec<TargetDesc> {
+    let mut descs = plan.targets.clone();
+    for d in &mut descs {
+        if d.name == OUTPUT {
+            d.colors[0].1 = output.format();
+        }
+    }
+    descs
+}
+
+/// Build a renderer for `scene` at its own size on a headless context and
+/// draw one frame from the scene's camera: what `gloss render` and the image
+/// tests do.
+pub fn render_scene(ctx: &Headless, scene: &Scene, output: Output) -> Result<Renderer> {
+    let (w, h) = scene.render.size;
+    let mut r = Renderer::with_output(
+        &ctx.gl,
+        &ctx.debug,
+        scene,
+        &Sources::Embedded,
+        w as i32,
+        h as i32,
+        output,
+    )?;
+    r.render(&scene.camera)?;
+    Ok(r)
+}

@@ -1,0 +1,95 @@
+//! The composite pass (notes 01 §8.6.2 step 3 "Generate Final Image"): one
+//! screen-sized triangle that adds the ambient term (ambient x albedo from
+//! the G-buffer) to the light the lighting pass accumulated, and encodes the
+//! result for the output. Background pixels (depth 1) get the background
+//! colour. Ends deferred shading and light volumes; the light pre-pass has
+//! its own combine pass (deferred_lighting.rs).
+//!
+//! GL state: no depth test (one triangle covers every pixel exactly once,
+//! notes 02); textures on the G-buffer units and unit::LIGHT, unbound after.
+
+use crate::frame::gbuffer;
+use crate::frame::lights::FrameLights;
+use crate::frame::plan::Pass;
+use crate::frame::targets::{LIGHT_ACCUMULATION, OUTPUT, TargetDesc};
+use crate::frame::uniforms::unit;
+use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::gl::program::Program;
+use crate::scene::{RenderPath, Scene};
+use anyhow::Result;
+use glam::Mat4;
+use glow::HasContext;
+
+pub const COMPOSITE: Technique = Technique {
+    name: "composite",
+    notes: "notes 01 §8.6.2 step 3, Generate Final Image",
+    file: file!(),
+    shaders: &["common/fullscreen.vert", "deferred/composite.frag"],
+    scene: "scenes/deferred-shading.toml",
+    docs: "docs/deferred/composite.md",
+    passes,
+    targets,
+    create,
+};
+
+fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
+    match scene.render.path {
+        RenderPath::Deferred | RenderPath::Volumes => vec![Pass::new(
+            "composite",
+            OUTPUT,
+            "1 full-screen triangle (ambient + light, sRGB encode)".into(),
+            file!(),
+        )],
+        RenderPath::Forward | RenderPath::Prepass => vec![],
+    }
+}
+
+fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
+    vec![]
+}
+
+struct Composite {
+    program: Program,
+}
+
+fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    Ok(Box::new(Composite {
+        program: p.build(&[
+            (glow::VERTEX_SHADER, "common/fullscreen.vert"),
+            (glow::FRAGMENT_SHADER, "deferred/composite.frag"),
+        ])?,
+    }))
+}
+
+impl RunPasses for Composite {
+    fn run(&self, _: &Pass, f: &Frame) {
+        let (gl, p, u) = (f.gl, &self.program, f.uniforms);
+        let output = f.targets.get(OUTPUT);
+        // A frame with no lights has no lighting pass and no light to add.
+        let light = f.targets.find(LIGHT_ACCUMULATION);
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
+            gl.viewport(0, 0, output.width, output.height);
+            gl.disable(glow::DEPTH_TEST);
+            p.use_program();
+            gbuffer::bind_for_reading(gl, p, f.targets.get(gbuffer::NAME), u);
+            gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
+            gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[0].id));
+            gl.active_texture(glow::TEXTURE0);
+            p.set_i32("u_light", unit::LIGHT as i32);
+            p.set_bool("u_has_light", light.is_some());
+            p.set_mat4("u_mvp", &Mat4::IDENTITY);
+            p.set_vec3("u_ambient", f.scene.render.ambient);
+            p.set_vec3("u_background", f.scene.render.background);
+            p.set_bool("u_output_srgb", u.output_srgb);
+            f.meshes.fullscreen.draw();
+
+            gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            gl.active_texture(glow::TEXTURE0);
+            gbuffer::unbind(gl);
+            gl.use_program(None);
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        }
+    }
+}

@@ -1,0 +1,194 @@
+//! Deferred lighting, the light pre-pass (notes 02 "Deferred lighting is like
+//! deferred shading, but computes specular and diffuse shading separately,
+//! then combines those in a final pass").
+//!
+//! 1. A thin G-buffer: normal + shininess and depth only (gbuffer.rs).
+//! 2. The light pre-pass: per light, its volume (light_volumes.rs: the same
+//!    steps, state and meshes), accumulating *diffuse* light and *specular*
+//!    light into two HDR targets.
+//! 3. The combine pass: the scene drawn again (the same vertex shader,
+//!    gl_Position invariant) with glDepthFunc(GL_LEQUAL) against the
+//!    G-buffer's depth, copied into the output with glBlitFramebuffer, and no
+//!    depth writes; each fragment reads its light and applies its own
+//!    material at full precision: kd (ambient + D) + ks S.
+//!
+//! GL state: step 2 as light_volumes.rs; step 3 sets GL_LEQUAL, depth writes
+//! off, back-face culling, glFrontFace per object, and restores them.
+
+#[allow(unused_imports)]
+use crate::GlEnumShim;
+use crate::frame::gbuffer;
+use crate::frame::lights::FrameLights;
+use crate::frame::plan::Pass;
+use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, OUTPUT, TargetDesc};
+use crate::frame::uniforms::{LIGHTS_BINDING, unit};
+use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::gl::program::Program;
+use crate::scene::{RenderPath, Scene};
+use crate::techniques::deferred::light_volumes::volume_pass;
+use anyhow::Result;
+use glow::HasContext;
+
+pub const DEFERRED_LIGHTING: Technique = Technique {
+    name: "deferred_lighting",
+    notes: "notes 02, Deferred lighting",
+    file: file!(),
+    shaders: &[
+        "deferred/light_volumes.vert",
+        "deferred/deferred_lighting.frag",
+        "deferred/gbuffer.vert",
+        "deferred/deferred_lighting_combine.frag",
+    ],
+    scene: "scenes/light-prepass.toml",
+    docs: "docs/deferred/deferred_lighting.md",
+    passes,
+    targets,
+    create,
+};
+
+/// The steps of this technique's passes.
+const LIGHT_PREPASS: u32 = 0;
+const COMBINE: u32 = 1;
+
+fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
+    if scene.render.path != RenderPath::Prepass {
+        return vec![];
+    }
+    let mut v = Vec::new();
+    if !lights.is_empty() {
+        let draws = format!(
+            "{} light volumes, diffuse and specular apart, additive",
+            lights.len()
+        );
+        v.push(Pass::new("light pre-pass", LIGHT_ACCUMULATION, draws, file!()).step(LIGHT_PREPASS));
+    }
+    let draws = format!(
+        "{} objects again, GL_LEQUAL against the G-buffer's depth (blitted): material x light, sRGB encode",
+        scene.objects.len()
+    );
+    v.push(Pass::new("combine", OUTPUT, draws, file!()).step(COMBINE));
+    v
+}
+
+fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
+    if scene.render.path != RenderPath::Prepass || lights.is_empty() {
+        return vec![];
+    }
+    let format = scene.render.accumulation.gl();
+    vec![TargetDesc {
+        name: LIGHT_ACCUMULATION,
+        colors: vec![("diffuse_light", format), ("specular_light", format)],
+        depth: Depth::Own(gbuffer::DEPTH),
+    }]
+}
+
+struct DeferredLighting {
+    light: Program,
+    combine: Program,
+}
+
+fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    let light = p.build(&[
+        (glow::VERTEX_SHADER, "deferred/light_volumes.vert"),
+        (glow::FRAGMENT_SHADER, "deferred/deferred_lighting.frag"),
+    ])?;
+    light.bind_uniform_block("Lights", LIGHTS_BINDING);
+    let combine = p.build(&[
+        (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
+        (
+            glow::FRAGMENT_SHADER,
+            "deferred/deferred_lighting_combine.frag",
+        ),
+    ])?;
+    Ok(Box::new(DeferredLighting { light, combine }))
+}
+
+impl RunPasses for DeferredLighting {
+    fn run(&self, pass: &Pass, f: &Frame) {
+        match pass.step {
+            LIGHT_PREPASS => self.light_prepass(f),
+            COMBINE => self.combine(f),
+            other => unreachable!("deferred lighting has no step {other}"),
+        }
+    }
+}
+
+impl DeferredLighting {
+    /// Step 2: diffuse and specular light, per light volume, additive: the
+    /// light-volume pass with this technique's shader.
+    fn light_prepass(&self, f: &Frame) {
+        volume_pass(f, &self.light);
+    }
+
+    /// Step 3: draw the scene again, combining light and material.
+    fn combine(&self, f: &Frame) {
+        let (gl, p, u) = (f.gl, &self.combine, f.uniforms);
+        let gbuf = f.targets.get(gbuffer::NAME);
+        let output = f.targets.get(OUTPUT);
+        // A frame with no lights has no light pre-pass and no light to add.
+        let light = f.targets.find(LIGHT_ACCUMULATION);
+        let (w, h) = (output.width, output.height);
+        unsafe {
+            // The G-buffer's depth becomes the output's depth.
+            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(gbuf.id));
+            gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, Some(output.id));
+            gl.blit_framebuffer(
+                0,
+                0,
+                w,
+                h,
+                0,
+                0,
+                w,
+                h,
+                glow::DEPTH_BUFFER_BIT,
+                glow::NEAREST,
+            );
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
+            gl.viewport(0, 0, w, h);
+            let bg = u.clear_color;
+            gl.clear_color(bg.x, bg.y, bg.z, 1.0);
+            gl.clear(glow::COLOR_BUFFER_BIT);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_func(glow::LEQUAL);
+            gl.depth_mask(false);
+            gl.enable(glow::CULL_FACE);
+            gl.cull_face(glow::BACK);
+
+            p.use_program();
+            p.set_mat4("u_view_projection", &u.view_projection);
+            p.set_vec3("u_ambient", f.scene.render.ambient);
+            p.set_bool("u_output_srgb", u.output_srgb);
+            p.set_bool("u_has_light", light.is_some());
+            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            p.set_i32("u_diffuse_light", unit::LIGHT as i32);
+            p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
+            gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
+            gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[0].id));
+            gl.active_texture(glow::TEXTURE0 + unit::SPECULAR_LIGHT);
+            gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[1].id));
+            gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+            for d in &f.draws.items {
+                // A mirroring model matrix turns counter-clockwise triangles clockwise.
+                gl.front_face(d.front_face());
+                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
+                f.draws.set_object_uniforms(p, d);
+                f.draws.mesh(d).draw();
+            }
+
+            gl.front_face(glow::CCW);
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            for u in [unit::LIGHT, unit::SPECULAR_LIGHT] {
+                gl.active_texture(glow::TEXTURE0 + u);
+                gl.bind_texture(glow::TEXTURE_2D, None);
+            }
+            gl.active_texture(glow::TEXTURE0);
+            gl.use_program(None);
+            gl.disable(glow::CULL_FACE);
+            gl.depth_mask(true);
+            gl.depth_func(glow::LESS);
+            gl.disable(glow::DEPTH_TEST);
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        }
+    }
+}

@@ -1,0 +1,122 @@
+//! The geometry pass: fill the G-buffer (notes 01 §8.6.2 step 1 "Fill
+//! G-Buffer"; notes 02 "G-Buffers"). Like a forward pass, but each fragment
+//! writes what lighting will need instead of a colour: normal and shininess,
+//! diffuse albedo, specular colour, and depth. The layout is in
+//! src/frame/gbuffer.rs. The light pre-pass fills a thin G-buffer (normal,
+//! shininess and depth only): the fragment shader's other outputs are dropped.
+//!
+//! GL state: sets glDepthFunc(render.depth_func), depth writes, back-face
+//! culling, glFrontFace per object, GL_FRAMEBUFFER_SRGB (albedo and specular
+//! are encoded as they are stored); restores all of them.
+
+#[allow(unused_imports)]
+use crate::GlEnumShim;
+use crate::frame::gbuffer;
+use crate::frame::lights::FrameLights;
+use crate::frame::plan::Pass;
+use crate::frame::targets::TargetDesc;
+use crate::frame::uniforms::unit;
+use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::gl::program::Program;
+use crate::scene::{RenderPath, Scene};
+use anyhow::Result;
+use glow::HasContext;
+
+pub const GBUFFER: Technique = Technique {
+    name: "gbuffer",
+    notes: "notes 01 §8.6.2 step 1; notes 02, G-Buffers",
+    file: file!(),
+    shaders: &["deferred/gbuffer.vert", "deferred/gbuffer.frag"],
+    scene: "scenes/deferred-shading.toml",
+    docs: "docs/deferred/gbuffer.md",
+    passes,
+    targets,
+    create,
+};
+
+/// Which G-buffer the scene's path fills: None (forward), full, or thin.
+fn layout(scene: &Scene) -> Option<bool> {
+    match scene.render.path {
+        RenderPath::Forward => None,
+        RenderPath::Deferred | RenderPath::Volumes => Some(false),
+        RenderPath::Prepass => Some(true),
+    }
+}
+
+fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
+    let n = scene.objects.len();
+    match layout(scene) {
+        None => vec![],
+        Some(false) => vec![Pass::new(
+            "gbuffer",
+            gbuffer::NAME,
+            format!("{n} objects"),
+            file!(),
+        )],
+        Some(true) => vec![Pass::new(
+            "gbuffer",
+            gbuffer::NAME,
+            format!("{n} objects (normal + shininess, depth)"),
+            file!(),
+        )],
+    }
+}
+
+fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
+    layout(scene).map(gbuffer::target).into_iter().collect()
+}
+
+struct GBufferPass {
+    program: Program,
+}
+
+fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    Ok(Box::new(GBufferPass {
+        program: p.build(&[
+            (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
+            (glow::FRAGMENT_SHADER, "deferred/gbuffer.frag"),
+        ])?,
+    }))
+}
+
+impl RunPasses for GBufferPass {
+    fn run(&self, _: &Pass, f: &Frame) {
+        let (gl, p, u) = (f.gl, &self.program, f.uniforms);
+        let target = f.targets.get(gbuffer::NAME);
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
+            gl.viewport(0, 0, target.width, target.height);
+            gl.clear_color(0.0, 0.0, 0.0, 0.0);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_func(f.scene.render.depth_func.gl());
+            gl.depth_mask(true);
+            gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT | glow::STENCIL_BUFFER_BIT);
+            gl.enable(glow::CULL_FACE);
+            gl.cull_face(glow::BACK);
+            // Linear albedo and specular are encoded to sRGB as they are stored.
+            gl.enable(glow::FRAMEBUFFER_SRGB);
+
+            p.use_program();
+            p.set_mat4("u_view_projection", &u.view_projection);
+            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+            for d in &f.draws.items {
+                // A mirroring model matrix turns counter-clockwise triangles clockwise.
+                gl.front_face(d.front_face());
+                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
+                f.draws.set_object_uniforms(p, d);
+                f.draws.mesh(d).draw();
+            }
+
+            gl.front_face(glow::CCW);
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            gl.active_texture(glow::TEXTURE0);
+            gl.disable(glow::FRAMEBUFFER_SRGB);
+            gl.use_program(None);
+            gl.disable(glow::CULL_FACE);
+            gl.disable(glow::DEPTH_TEST);
+            gl.depth_func(glow::LESS);
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        }
+    }
+}

@@ -1,0 +1,17 @@
+//! Deferred rendering (notes 01 §8.6, notes 02, notes 04): the G-buffer,
+//! lighting with a full-screen pass per light or with light volumes (plain
+//! or stencil-tested), the composite pass, and deferred lighting (the light
+//! pre-pass).
+//!
+//! | path     | 1. fill G-buffer | 2. lighting                            | 3. final image       |
+//! |----------|------------------|----------------------------------------|----------------------|
+//! | deferred | gbuffer.rs       | deferred_shading.rs (full screen)      | composite.rs         |
+//! | volumes  | gbuffer.rs       | light_volumes.rs / stencil_light_volumes.rs | composite.rs    |
+//! | prepass  | gbuffer.rs, thin | deferred_lighting.rs (volumes)         | deferred_lighting.rs |
+
+pub mod composite;
+pub mod deferred_lighting;
+pub mod deferred_shading;
+pub mod gbuffer;
+pub mod light_volumes;
+pub mod stencil_light_volumes;

@@ -1,0 +1,152 @@
+//! Forward rendering (notes 04, "Forward rendering"; notes 01 §8.2 "Lighting
+//! Models" and §8.3 "Phong Reflection Model").
+//!
+//! ```text
+//! for every object in the scene
+//!     for every fragment of that object
+//!         for every light: calculate shading
+//! ```
+//!
+//! Three shading modes from notes 01 §8.2: flat (one colour per triangle,
+//! lit in a geometry shader), Gouraud (lit per vertex) and Phong (lit per
+//! fragment). This is the reference every deferred path is compared against.
+//!
+//! GL state: sets glDepthFunc(render.depth_func), depth writes, back-face
+//! culling, glFrontFace per object; restores GL_LESS, no depth test, no
+//! culling, GL_CCW.
+
+#[allow(unused_imports)]
+use crate::GlEnumShim;
+use crate::frame::lights::FrameLights;
+use crate::frame::plan::Pass;
+use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::uniforms::{LIGHTS_BINDING, unit};
+use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::gl::program::Program;
+use crate::scene::{RenderPath, Scene, Shading};
+use anyhow::Result;
+use glow::HasContext;
+
+pub const FORWARD: Technique = Technique {
+    name: "forward",
+    notes: "notes 04, Forward rendering; notes 01 §8.2-8.3",
+    file: file!(),
+    shaders: &[
+        "lighting/forward.vert",
+        "lighting/forward.frag",
+        "lighting/forward_gouraud.vert",
+        "lighting/forward_gouraud.frag",
+        "lighting/forward_flat.vert",
+        "lighting/forward_flat.geom",
+        "lighting/forward_flat.frag",
+    ],
+    scene: "scenes/shading-phong.toml",
+    docs: "docs/lighting/forward.md",
+    passes,
+    targets,
+    create,
+};
+
+fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
+    if scene.render.path != RenderPath::Forward {
+        return vec![];
+    }
+    let mode = match scene.render.shading {
+        Shading::Phong => "Phong shading, per fragment",
+        Shading::Gouraud => "Gouraud shading, per vertex",
+        Shading::Flat => "flat shading, per triangle in a geometry shader",
+    };
+    let draws = format!(
+        "{} objects x {} lights ({mode})",
+        scene.objects.len(),
+        scene.lights.len()
+    );
+    vec![Pass::new("forward", OUTPUT, draws, file!())]
+}
+
+fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
+    vec![]
+}
+
+struct Forward {
+    phong: Program,
+    gouraud: Program,
+    flat: Program,
+}
+
+fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    let phong = p.build(&[
+        (glow::VERTEX_SHADER, "lighting/forward.vert"),
+        (glow::FRAGMENT_SHADER, "lighting/forward.frag"),
+    ])?;
+    let gouraud = p.build(&[
+        (glow::VERTEX_SHADER, "lighting/forward_gouraud.vert"),
+        (glow::FRAGMENT_SHADER, "lighting/forward_gouraud.frag"),
+    ])?;
+    let flat = p.build(&[
+        (glow::VERTEX_SHADER, "lighting/forward_flat.vert"),
+        (glow::GEOMETRY_SHADER, "lighting/forward_flat.geom"),
+        (glow::FRAGMENT_SHADER, "lighting/forward_flat.frag"),
+    ])?;
+    for program in [&phong, &gouraud, &flat] {
+        program.bind_uniform_block("Lights", LIGHTS_BINDING);
+    }
+    Ok(Box::new(Forward {
+        phong,
+        gouraud,
+        flat,
+    }))
+}
+
+impl RunPasses for Forward {
+    /// The forward pass: clear, depth test, back-face culling, one draw per object.
+    fn run(&self, _: &Pass, f: &Frame) {
+        let (gl, settings, u) = (f.gl, &f.scene.render, f.uniforms);
+        let target = f.targets.get(OUTPUT);
+        let p = match settings.shading {
+            Shading::Phong => &self.phong,
+            Shading::Gouraud => &self.gouraud,
+            Shading::Flat => &self.flat,
+        };
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
+            gl.viewport(0, 0, target.width, target.height);
+            let bg = u.clear_color;
+            gl.clear_color(bg.x, bg.y, bg.z, 1.0);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_func(settings.depth_func.gl());
+            gl.depth_mask(true);
+            gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
+            gl.enable(glow::CULL_FACE);
+            gl.cull_face(glow::BACK);
+
+            p.use_program();
+            p.set_mat4("u_view_projection", &u.view_projection);
+            p.set_vec3("u_eye", u.eye);
+            p.set_vec3("u_ambient", settings.ambient);
+            p.set_i32("u_light_count", u.light_count);
+            p.set_bool("u_output_srgb", u.output_srgb);
+            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
+            gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+            for d in &f.draws.items {
+                // A mirroring model matrix turns counter-clockwise triangles clockwise.
+                gl.front_face(d.front_face());
+                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
+                f.draws.set_object_uniforms(p, d);
+                f.draws.mesh(d).draw();
+            }
+
+            // Restore the state this pass changed.
+            gl.front_face(glow::CCW);
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            gl.active_texture(glow::TEXTURE0);
+            gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
+            gl.use_program(None);
+            gl.disable(glow::CULL_FACE);
+            gl.disable(glow::DEPTH_TEST);
+            gl.depth_func(glow::LESS);
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        }
+    }
+}

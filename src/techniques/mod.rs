@@ -1,0 +1,34 @@
+//! Every technique of the course, one file each in its chapter's folder,
+//! named as the notes name it. `ALL` is the registry: one line per
+//! technique, in the order their passes run within a frame. The frame plan,
+//! `gloss plan`, the bench and the demo all read this list; a technique
+//! whose scene does not need it adds no pass (docs/adding-a-technique.md).
+//!
+//! A technique imports only what lies below it (src/frame, src/gl,
+//! src/scene, src/geometry, src/lighting, src/math) and, at most, a technique
+//! of its own chapter; never the renderer or another chapter's technique
+//! (tests/architecture.rs checks it).
+
+pub mod deferred;
+pub mod lighting;
+
+use crate::frame::Technique;
+use crate::frame::lights::FrameLights;
+use crate::frame::plan::FramePlan;
+use crate::scene::Scene;
+
+/// The registry, in frame order.
+pub static ALL: &[&Technique] = &[
+    &lighting::forward::FORWARD,
+    &deferred::gbuffer::GBUFFER,
+    &deferred::deferred_shading::DEFERRED_SHADING,
+    &deferred::light_volumes::LIGHT_VOLUMES,
+    &deferred::stencil_light_volumes::STENCIL_LIGHT_VOLUMES,
+    &deferred::deferred_lighting::DEFERRED_LIGHTING,
+    &deferred::composite::COMPOSITE,
+];
+
+/// The frame plan of `scene`: the registered techniques' passes and targets.
+pub fn plan(scene: &Scene) -> FramePlan {
+    FramePlan::new(scene, &FrameLights::new(scene), ALL)
+}

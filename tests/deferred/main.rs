@@ -1,0 +1,40 @@
+//! Invariants between the render paths on the shipped scenes:
+//!
+//! * deferred shading == forward: at most 0.5% of pixels differ by more than
+//!   1/255 and none by more than 6/255 (sRGB 8-bit output). The residue is the
+//!   G-buffer's precision: RGBA16F normals (relative error 2^-11) raised to a
+//!   shininess of up to 96 in a highlight, and 8-bit sRGB albedo.
+//! * light pre-pass == forward: the same 0.5% / 1/255 bound; and at most 0.02%
+//!   of pixels off by more than 8/255: its second geometry pass tests depth
+//!   with GL_LEQUAL, so where two surfaces fall within one 24-bit depth step
+//!   the later one wins (docs/deferred/deferred_lighting.md).
+//! * light volumes == full-screen deferred within the cutoff bound: per
+//!   channel, (number of bounded lights) x cutoff x (kd + ks) in linear light;
+//!   with a tiny cutoff, within 1/255.
+//! * camera inside a light volume; spot cones cover their lit region; the
+//!   stencil volume test gives the same image; `gloss plan` lists the passes.
+//!
+//! Every render runs with GL debug output on and fails on any GL error.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod deferred_lighting;
+mod deferred_shading;
+mod light_volumes;
+mod stencil_light_volumes;
+
+use gloss::image_compare::Tolerance;
+use gloss::scene::{RenderPath, Scene};
+
+pub fn with_path(scene: &Scene, path: RenderPath) -> Scene {
+    let mut s = scene.clone();
+    s.render.path = path;
+    s
+}
+
+pub const DEFERRED_BOUND: Tolerance = Tolerance {
+    threshold: 1.0 / 255.0,
+    max_frac_over: 0.005,
+    max_abs: Some(6.0 / 255.0),
+};

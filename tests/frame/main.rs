@@ -1,0 +1,9 @@
+//! The frame (src/frame/): the plan, and what every pass must do: restore
+//! the GL state it changed, raise no GL error, and never sample a texture
+//! attached to the framebuffer it draws into.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod passes;
+mod plan;

@@ -1,0 +1,178 @@
+//! src/frame/plan.rs and the registry in src/techniques/mod.rs: the plan
+//! lists the right passes and targets for every path; the renderer runs
+//! exactly the planned passes; every registered technique has its file,
+//! shaders, scene and docs page, and its scene runs it.
+
+use crate::common;
+use gloss::scene::{RenderPath, Scene};
+use gloss::techniques::{ALL, plan};
+
+fn with_path(scene: &Scene, path: RenderPath) -> Scene {
+    let mut s = scene.clone();
+    s.render.path = path;
+    s
+}
+
+#[test]
+fn frame_plan_lists_the_right_passes() {
+    let base = common::scene("mixed-lights.toml");
+    let names = |p: RenderPath| -> Vec<&'static str> {
+        plan(&with_path(&base, p))
+            .passes
+            .iter()
+            .map(|p| p.name)
+            .collect()
+    };
+    assert_eq!(names(RenderPath::Forward), ["forward"]);
+    assert_eq!(
+        names(RenderPath::Deferred),
+        ["gbuffer", "lighting", "composite"]
+    );
+    assert_eq!(
+        names(RenderPath::Volumes),
+        ["gbuffer", "lighting", "composite"]
+    );
+    assert_eq!(
+        names(RenderPath::Prepass),
+        ["gbuffer", "light pre-pass", "combine"]
+    );
+    let vol = plan(&with_path(&base, RenderPath::Volumes));
+    let lighting = &vol.passes[1];
+    assert!(lighting.draws.contains("2 spheres"), "{}", lighting.draws);
+    assert!(lighting.draws.contains("3 cones"), "{}", lighting.draws);
+    assert!(
+        lighting.draws.contains("1 full-screen"),
+        "{}",
+        lighting.draws
+    );
+    // The light pre-pass's G-buffer is thin; deferred shading's is not.
+    let pre = plan(&with_path(&base, RenderPath::Prepass));
+    assert_eq!(pre.targets[0].name, "gbuffer");
+    assert_eq!(pre.targets[0].attachments().len(), 2, "{pre}");
+    assert_eq!(
+        plan(&with_path(&base, RenderPath::Deferred)).targets[0]
+            .attachments()
+            .len(),
+        4
+    );
+    assert!(pre.passes[2].draws.contains("3 objects again"), "{pre}");
+    // A scene without lights runs no lighting pass.
+    let mut dark = with_path(&base, RenderPath::Volumes);
+    dark.lights.clear();
+    let p = plan(&dark);
+    assert!(!p.has_pass("lighting"), "{p}");
+    // Lights with no finite radius (Kl = Kq = 0) are drawn full screen.
+    let mut flat = with_path(&base, RenderPath::Volumes);
+    flat.lights.truncate(1);
+    flat.lights[0].kl = 0.0;
+    flat.lights[0].kq = 0.0;
+    let p = plan(&flat);
+    assert!(p.passes[1].draws.contains("no finite radius"), "{p}");
+    // The printed plan through the CLI.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["plan", "scenes/many-lights.toml", "--path", "volumes"])
+        .current_dir(common::root())
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("256 spheres"), "{text}");
+    assert!(text.contains("light:RGBA16F"), "{text}");
+}
+
+#[test]
+fn the_renderer_runs_exactly_the_planned_passes() {
+    // The plan is not just words: with timing on, the renderer reports each
+    // pass it ran, and they must be the plan's passes in the plan's order,
+    // with and without lights.
+    let ctx = common::context(common::backend());
+    for lights in [true, false] {
+        for path in [
+            RenderPath::Forward,
+            RenderPath::Deferred,
+            RenderPath::Volumes,
+            RenderPath::Prepass,
+        ] {
+            let mut scene = with_path(&common::scene("mixed-lights.toml"), path);
+            if !lights {
+                scene.lights.clear();
+            }
+            scene.render.size = (64, 36);
+            let mut r = gloss::renderer::Renderer::new(
+                &ctx.gl,
+                &ctx.debug,
+                &scene,
+                &gloss::gl::program::Sources::Embedded,
+                64,
+                36,
+            )
+            .unwrap();
+            r.timing = true;
+            r.render(&scene.camera.clone()).unwrap();
+            let ran: Vec<&str> = r.last_times.passes.iter().map(|p| p.0).collect();
+            let planned: Vec<&str> = plan(&scene).passes.iter().map(|p| p.name).collect();
+            assert_eq!(ran, planned, "{path:?}, lights: {lights}");
+        }
+    }
+}
+
+#[test]
+fn every_technique_has_its_file_shaders_scene_and_docs_and_its_scene_runs_it() {
+    let root = common::root();
+    for t in ALL {
+        for path in [t.file, t.scene, t.docs] {
+            assert!(
+                root.join(path).is_file(),
+                "{}: {path} does not exist",
+                t.name
+            );
+        }
+        assert!(
+            t.file.ends_with(&format!("/{}.rs", t.name)),
+            "{}: the file is named as the technique: {}",
+            t.name,
+            t.file
+        );
+        assert!(!t.shaders.is_empty(), "{} has no shader", t.name);
+        for s in t.shaders {
+            assert!(
+                root.join("glsl").join(s).is_file(),
+                "{}: glsl/{s} does not exist",
+                t.name
+            );
+        }
+        let scene = Scene::load(&root.join(t.scene)).unwrap();
+        let p = plan(&scene);
+        assert!(
+            p.passes.iter().any(|pass| pass.code == t.file),
+            "{}: its scene {} does not run it:\n{p}",
+            t.name,
+            t.scene
+        );
+    }
+}
+
+#[test]
+fn a_frame_without_lights_allocates_no_light_target() {
+    for path in [
+        RenderPath::Deferred,
+        RenderPath::Volumes,
+        RenderPath::Prepass,
+    ] {
+        let mut s = with_path(&common::scene("mixed-lights.toml"), path);
+        s.lights.clear();
+        let p = plan(&s);
+        assert!(p.target("light_accumulation").is_none(), "{p}");
+        assert!(p.target("gbuffer").is_some(), "{p}");
+    }
+    let p = plan(&common::scene("shading-phong.toml"));
+    assert_eq!(
+        p.targets.len(),
+        1,
+        "forward renders straight into the output: {p}"
+    );
+}

@@ -1,0 +1,166 @@
+//! Analytic references: a rendered pixel equals the Phong formula (notes 01
+//! §8.3 with notes 04's attenuation) evaluated on the CPU, within 1/255 per
+//! channel after sRGB encoding. Includes the hard cases: Kq = 0, a sun at the
+//! horizon, a spot light's cone edge, and a singular model matrix.
+
+use crate::common;
+
+use glam::Vec3;
+use gloss::lighting::{shade, srgb_encode};
+use gloss::renderer::Output;
+use gloss::scene::{Camera, Projection, Scene, Shading};
+
+/// The world point under the centre of pixel (px, py) (top row first) for
+/// the top-down orthographic camera of scenes/plane.toml (up = -z).
+fn world_at(cam: &Camera, w: u32, h: u32, px: u32, py: u32) -> Vec3 {
+    let Projection::Orthographic { half_height } = cam.projection else {
+        panic!("plane.toml uses an orthographic camera")
+    };
+    let half_width = half_height * w as f32 / h as f32;
+    let ndc_x = (px as f32 + 0.5) / w as f32 * 2.0 - 1.0;
+    let ndc_y = 1.0 - (py as f32 + 0.5) / h as f32 * 2.0;
+    Vec3::new(
+        cam.eye.x + ndc_x * half_width,
+        0.0,
+        cam.eye.z - ndc_y * half_height,
+    )
+}
+
+/// Every 7th pixel in x and y is compared with the CPU's Phong; returns the
+/// largest difference in 8-bit steps.
+fn check_plane(scene: &Scene, label: &str) -> f32 {
+    let r = common::render(scene, Output::Srgb8);
+    let m = &scene.materials[scene.objects[0].material];
+    let mut worst = 0.0f32;
+    for py in (0..r.height).step_by(7) {
+        for px in (0..r.width).step_by(7) {
+            let p = world_at(&scene.camera, r.width, r.height, px, py);
+            let c = shade(
+                &scene.lights,
+                scene.render.ambient,
+                m,
+                m.diffuse,
+                p,
+                Vec3::Y,
+                scene.camera.eye,
+            );
+            let got = r.image.get_pixel(px, py);
+            for ch in 0..3 {
+                let want = srgb_encode(c[ch]) * 255.0;
+                let diff = (got[ch] as f32 - want).abs();
+                worst = worst.max(diff);
+                assert!(
+                    diff <= 1.0 + 1e-3,
+                    "{label}: pixel ({px}, {py}) channel {ch}: rendered {}, Phong on the CPU gives {want:.2} (world {p})",
+                    got[ch]
+                );
+            }
+        }
+    }
+    worst
+}
+
+#[test]
+fn lit_plane_equals_phong_formula_per_pixel() {
+    let scene = common::scene("plane.toml");
+    let worst = check_plane(&scene, "plane.toml");
+    eprintln!("plane: worst difference {worst:.3}/255");
+}
+
+#[test]
+fn gouraud_and_flat_on_a_single_quad_are_not_phong() {
+    // A plane of two triangles: Gouraud interpolates the vertex colours and flat
+    // lights each triangle at its centroid, so both must differ visibly from
+    // the per-pixel formula somewhere near the light.
+    for shading in [Shading::Gouraud, Shading::Flat] {
+        let mut scene = common::scene("plane.toml");
+        scene.render.shading = shading;
+        let r = common::render(&scene, Output::Srgb8);
+        let phong = common::render(&common::scene("plane.toml"), Output::Srgb8);
+        let m = gloss::image_compare::compare_rgba8(&r.image, &phong.image, 2.0 / 255.0).unwrap();
+        assert!(
+            m.max_abs > 20.0 / 255.0,
+            "{shading:?} looks like Phong: {m}"
+        );
+    }
+}
+
+#[test]
+fn flat_shading_gives_one_colour_per_triangle() {
+    let mut scene = common::scene("plane.toml");
+    scene.render.shading = Shading::Flat;
+    let r = common::render(&scene, Output::Srgb8);
+    // The plane is two triangles: the image holds exactly two colours.
+    let mut colours: Vec<[u8; 4]> = r.image.pixels().map(|p| p.0).collect();
+    colours.sort();
+    colours.dedup();
+    assert_eq!(
+        colours.len(),
+        2,
+        "flat shading of a two-triangle plane: {colours:?}"
+    );
+}
+
+#[test]
+fn linear_attenuation_only_kq_zero() {
+    let mut scene = common::scene("plane.toml");
+    scene.lights[0].kq = 0.0;
+    scene.lights[0].kl = 0.35;
+    check_plane(&scene, "Kq = 0");
+}
+
+#[test]
+fn constant_attenuation_only_kl_kq_zero() {
+    let mut scene = common::scene("plane.toml");
+    scene.lights[0].kq = 0.0;
+    scene.lights[0].kl = 0.0;
+    scene.lights[0].kc = 4.0;
+    check_plane(&scene, "Kl = Kq = 0");
+}
+
+#[test]
+fn sun_at_the_horizon_adds_nothing() {
+    // A directional light exactly along the plane: N . L = 0, so only the
+    // other light and the ambient term remain; and one a hair above it.
+    for y in [0.0f32, -1e-3] {
+        let mut scene = common::scene("plane.toml");
+        let mut sun = scene.lights[0].clone();
+        sun.kind = gloss::scene::LightKind::Directional;
+        sun.direction = Vec3::new(1.0, y, 0.0).normalize();
+        sun.intensity = 3.0;
+        scene.lights.push(sun);
+        check_plane(&scene, &format!("sun at the horizon (y = {y})"));
+    }
+}
+
+#[test]
+fn spot_light_cone_edge() {
+    let mut scene = common::scene("plane.toml");
+    let l = &mut scene.lights[0];
+    l.kind = gloss::scene::LightKind::Spot;
+    l.position = Vec3::new(0.5, 3.0, 0.0);
+    l.direction = Vec3::new(0.2, -1.0, 0.1).normalize();
+    l.inner_angle = 15.0;
+    l.outer_angle = 30.0;
+    l.intensity = 4.0;
+    check_plane(&scene, "spot light");
+}
+
+#[test]
+fn singular_model_matrix_flattened_sphere_is_lit_like_the_plane() {
+    // A sphere scaled to zero height is a disc in y = 0 whose normals are +y
+    // (cofactor normal matrix) on its top half; where the top half is drawn,
+    // it must look exactly like the plane. No NaN, no GL error.
+    let mut scene = common::scene("plane.toml");
+    let text = std::fs::read_to_string(common::root().join("scenes/plane.toml")).unwrap();
+    let text = text
+        .replace("mesh = \"plane\"", "mesh = \"sphere\"")
+        .replace("scale = [10.0, 1.0, 10.0]", "scale = [10.0, 0.0, 10.0]");
+    let flat = Scene::parse(&text, &common::root().join("scenes/plane.toml")).unwrap();
+    scene.objects = flat.objects;
+    let nm = gloss::frame::draw_list::normal_matrix(&scene.objects[0].model);
+    assert!(nm.is_finite());
+    let n = (nm * Vec3::new(0.3, 0.8, 0.1)).normalize();
+    assert!((n - Vec3::Y).length() < 1e-6, "flattened normal {n}");
+    check_plane(&scene, "flattened sphere");
+}

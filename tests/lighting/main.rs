@@ -1,0 +1,7 @@
+//! The lighting chapter (notes 01 §8, notes 04 "Forward rendering"): one
+//! module per technique file under src/techniques/lighting/.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod forward;

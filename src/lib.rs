@@ -20,5 +20,6 @@ pub mod lighting;
 pub mod math;
 pub mod plan;
 pub mod renderer;
+#[path = "bench/table.rs"]
 pub mod report;
 pub mod scene;

@@ -20,6 +20,4 @@ pub mod lighting;
 pub mod math;
 pub mod plan;
 pub mod renderer;
-#[path = "bench/table.rs"]
-pub mod report;
 pub mod scene;

@@ -24,7 +24,6 @@ pub mod image_compare;
 pub mod lighting;
 pub mod math;
 pub mod renderer;
-pub mod report;
 pub mod scene;
 pub mod techniques;
 

@@ -9,89 +9,33 @@
 //! deferred until the driver flushes), so every figure here is the CPU clock
 //! around glFinish ("cpu+glFinish"). On a real GPU the whole frame is also
 //! timed with a GL_TIME_ELAPSED query ("gpu" column).
+//!
+//! The files: `args` (the command line), `stats` (median and spread of the
+//! samples), `table` (the rows and the text table), `csv` and `plot` (the
+//! CSV file and the PNG plot of error against frame time).
+
+mod args;
+mod csv;
+mod plot;
+mod stats;
+mod table;
+
+pub use args::{BenchArgs, parse_size};
+pub use csv::{csv, write_csv};
+pub use plot::{PLOT_SIZE, plot};
+pub use stats::Stats;
+pub use table::{BenchRow, speedup_vs_forward, table};
 
 use crate::gl::program::Sources;
 use crate::gl::query::TimerQuery;
 use crate::gl::{Backend, Headless};
 use crate::image_compare::compare_rgba8;
 use crate::renderer::Renderer;
-use crate::report::{self, BenchRow, Stats};
 use crate::scene::{RenderPath, Scene};
 use anyhow::{Context as _, Result, bail};
 use std::io::Write as _;
-use std::path::PathBuf;
-
-#[derive(clap::Args, Debug, Clone)]
-pub struct BenchArgs {
-    /// The scene to measure (default scenes/many-lights.toml).
-    pub scene: Option<PathBuf>,
-    /// Render paths, comma-separated.
-    #[arg(
-        long,
-        value_delimiter = ',',
-        value_enum,
-        default_value = "forward,deferred,volumes,prepass"
-    )]
-    pub paths: Vec<RenderPath>,
-    /// Light counts (scenes with a [light_grid]); default: the scene's own.
-    #[arg(long, value_delimiter = ',')]
-    pub lights: Vec<usize>,
-    /// Light-volume cutoffs to sweep for the paths that use one (volumes,
-    /// prepass); default: the scene's (5/256). Fractions like 5/256 are accepted.
-    #[arg(long, value_delimiter = ',', value_parser = parse_fraction)]
-    pub cutoffs: Vec<f32>,
-    /// Also measure light volumes with the two-sided stencil test.
-    #[arg(long)]
-    pub stencil: bool,
-    /// WIDTHxHEIGHT (default: the scene's render.size).
-    #[arg(long, value_parser = parse_size)]
-    pub size: Option<(u32, u32)>,
-    /// Measured frames per setting.
-    #[arg(long, default_value_t = 20)]
-    pub frames: usize,
-    /// Unmeasured frames first.
-    #[arg(long, default_value_t = 3)]
-    pub warmup: usize,
-    /// Where the CSV and the plot go.
-    #[arg(long, default_value = "target/bench")]
-    pub out: PathBuf,
-}
-
-fn parse_fraction(s: &str) -> Result<f32, String> {
-    let v = match s.split_once('/') {
-        Some((a, b)) => {
-            let a: f32 = a
-                .trim()
-                .parse()
-                .map_err(|_| format!("bad number in \"{s}\""))?;
-            let b: f32 = b
-                .trim()
-                .parse()
-                .map_err(|_| format!("bad number in \"{s}\""))?;
-            a / b
-        }
-        None => s
-            .trim()
-            .parse()
-            .map_err(|_| format!("bad number \"{s}\""))?,
-    };
-    if !(v.is_finite() && v > 0.0 && v < 1.0) {
-        return Err(format!("cutoff {s}: expected a fraction in (0, 1)"));
-    }
-    Ok(v)
-}
-
-pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let (w, h) = s
-        .split_once(['x', 'X'])
-        .ok_or_else(|| format!("expected WIDTHxHEIGHT, found \"{s}\""))?;
-    let w: u32 = w.parse().map_err(|_| format!("bad width in \"{s}\""))?;
-    let h: u32 = h.parse().map_err(|_| format!("bad height in \"{s}\""))?;
-    if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
-        return Err(format!("size {w}x{h}: each side must be 1..=8192"));
-    }
-    Ok((w, h))
-}
+use std::path::{Path, PathBuf};
+use table::cutoff_label;
 
 /// One setting to measure.
 #[derive(Clone, Debug)]
@@ -109,18 +53,9 @@ impl Setting {
             s.push_str("+stencil");
         }
         if let Some(c) = self.cutoff {
-            s.push_str(&format!(" cutoff {}", cutoff_label(c)));
+            s.push_str(&format!(" cutoff {}", cutoff_label(c, None)));
         }
         s
-    }
-}
-
-fn cutoff_label(c: f32) -> String {
-    let n = c * 256.0;
-    if (n - n.round()).abs() < 1e-4 {
-        format!("{}/256", n.round())
-    } else {
-        format!("{c}")
     }
 }
 
@@ -311,13 +246,22 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         });
     }
     eprintln!();
-    println!("{}", report::table(&rows));
+    println!("{}", table(&rows));
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create {}", args.out.display()))?;
     let csv = args.out.join("bench.csv");
     let png = args.out.join("bench.png");
-    report::write_csv(&rows, &csv)?;
-    report::plot(&rows, &png)?;
+    write_csv(&rows, &csv)?;
+    plot(&rows, &png)?;
     println!("wrote {} and {}", csv.display(), png.display());
+    Ok(())
+}
+
+/// Creates `path`'s parent directory (for the CSV file and the plot).
+fn create_parent(path: &Path) -> anyhow::Result<()> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("creating directory {}", dir.display()))?;
+    }
     Ok(())
 }

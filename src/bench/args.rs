@@ -1,0 +1,77 @@
+//! The command line of `gloss bench`: which settings to measure, how many
+//! frames, and where the CSV and the plot go.
+
+use crate::scene::RenderPath;
+use std::path::PathBuf;
+
+#[derive(clap::Args, Debug, Clone)]
+pub struct BenchArgs {
+    /// The scene to measure (default scenes/many-lights.toml).
+    pub scene: Option<PathBuf>,
+    /// Render paths, comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_enum,
+        default_value = "forward,deferred,volumes,prepass"
+    )]
+    pub paths: Vec<RenderPath>,
+    /// Light counts (scenes with a [light_grid]); default: the scene's own.
+    #[arg(long, value_delimiter = ',')]
+    pub lights: Vec<usize>,
+    /// Light-volume cutoffs to sweep for the paths that use one (volumes,
+    /// prepass); default: the scene's (5/256). Fractions like 5/256 are accepted.
+    #[arg(long, value_delimiter = ',', value_parser = parse_fraction)]
+    pub cutoffs: Vec<f32>,
+    /// Also measure light volumes with the two-sided stencil test.
+    #[arg(long)]
+    pub stencil: bool,
+    /// WIDTHxHEIGHT (default: the scene's render.size).
+    #[arg(long, value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Measured frames per setting.
+    #[arg(long, default_value_t = 20)]
+    pub frames: usize,
+    /// Unmeasured frames first.
+    #[arg(long, default_value_t = 3)]
+    pub warmup: usize,
+    /// Where the CSV and the plot go.
+    #[arg(long, default_value = "target/bench")]
+    pub out: PathBuf,
+}
+
+fn parse_fraction(s: &str) -> Result<f32, String> {
+    let v = match s.split_once('/') {
+        Some((a, b)) => {
+            let a: f32 = a
+                .trim()
+                .parse()
+                .map_err(|_| format!("bad number in \"{s}\""))?;
+            let b: f32 = b
+                .trim()
+                .parse()
+                .map_err(|_| format!("bad number in \"{s}\""))?;
+            a / b
+        }
+        None => s
+            .trim()
+            .parse()
+            .map_err(|_| format!("bad number \"{s}\""))?,
+    };
+    if !(v.is_finite() && v > 0.0 && v < 1.0) {
+        return Err(format!("cutoff {s}: expected a fraction in (0, 1)"));
+    }
+    Ok(v)
+}
+
+pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("expected WIDTHxHEIGHT, found \"{s}\""))?;
+    let w: u32 = w.parse().map_err(|_| format!("bad width in \"{s}\""))?;
+    let h: u32 = h.parse().map_err(|_| format!("bad height in \"{s}\""))?;
+    if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
+        return Err(format!("size {w}x{h}: each side must be 1..=8192"));
+    }
+    Ok((w, h))
+}

@@ -1,0 +1,352 @@
+//! Presentation of `gloss bench` results as a plain-text table, and the
+//! rows that the table, the CSV file and the plot are made from.
+//!
+//! Times are in milliseconds. Image errors are measured against the
+//! reference rendering in `0..1` units per channel and shown x255, i.e. in
+//! 8-bit steps.
+
+use super::stats::Stats;
+
+/// One measured configuration of `gloss bench`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BenchRow {
+    /// Human-readable name of the configuration.
+    pub setting: String,
+    /// Rendering path, e.g. "forward", "deferred", "deferred-volumes".
+    pub path: String,
+    pub lights: usize,
+    /// Light-volume cutoff, if the path uses one.
+    pub cutoff: Option<f32>,
+    /// Per-pass timings, in frame order.
+    pub passes: Vec<(String, Stats)>,
+    /// Whole-frame timing (ms).
+    pub frame: Stats,
+    /// GPU-side whole-frame timing (ms), if timer queries were available.
+    pub gpu_frame_ms: Option<Stats>,
+    /// Which clock produced the timings (e.g. "GL_TIME_ELAPSED", "CPU+glFinish").
+    pub clock: String,
+    /// RMSE against the reference image, `0..1` units per channel.
+    pub rmse: f64,
+    /// Largest per-channel difference against the reference, `0..1` units.
+    pub max_abs: f64,
+    /// Percentage (`0..=100`) of pixels with any channel off by more than 1/255.
+    pub pct_over_1: f64,
+}
+
+/// Pass names over all rows, in order of first appearance.
+pub(super) fn pass_names(rows: &[BenchRow]) -> Vec<&str> {
+    let mut names: Vec<&str> = Vec::new();
+    for r in rows {
+        for (n, _) in &r.passes {
+            if !names.contains(&n.as_str()) {
+                names.push(n);
+            }
+        }
+    }
+    names
+}
+
+pub(super) fn pass_stats<'a>(row: &'a BenchRow, name: &str) -> Option<&'a Stats> {
+    row.passes.iter().find(|(n, _)| n == name).map(|(_, s)| s)
+}
+
+/// Speed-up of `row` over the first row whose path is "forward" with the same
+/// light count: forward median / row median. `None` if there is no such row
+/// or either median is not a positive finite number.
+pub fn speedup_vs_forward(rows: &[BenchRow], row: &BenchRow) -> Option<f64> {
+    let reference = rows
+        .iter()
+        .find(|r| r.path == "forward" && r.lights == row.lights)?;
+    let (f, m) = (reference.frame.median, row.frame.median);
+    (f.is_finite() && m.is_finite() && f > 0.0 && m > 0.0).then(|| f / m)
+}
+
+const DASH: &str = "—";
+
+fn num(v: f64, decimals: usize) -> String {
+    if v.is_finite() {
+        format!("{v:.decimals$}")
+    } else {
+        DASH.to_string()
+    }
+}
+
+/// Milliseconds with about four significant digits.
+fn ms(v: f64) -> String {
+    let d = if !v.is_finite() || v.abs() >= 100.0 {
+        1
+    } else if v.abs() >= 10.0 {
+        2
+    } else {
+        3
+    };
+    num(v, d)
+}
+
+/// "5/256" for cutoffs that are a whole number of 256ths, else `decimals`
+/// decimals ("0.0100": the table's column and the plot's labels) or, with
+/// `None`, the shortest form that reads back as the same `f32` ("0.01": the
+/// setting names, "volumes cutoff 0.01"). "—" if not finite.
+pub(super) fn cutoff_label(c: f32, decimals: Option<usize>) -> String {
+    let k = f64::from(c) * 256.0;
+    if !k.is_finite() {
+        DASH.to_string()
+    } else if (k - k.round()).abs() < 1e-3 {
+        format!("{}/256", k.round())
+    } else if let Some(d) = decimals {
+        format!("{c:.d$}")
+    } else {
+        format!("{c}")
+    }
+}
+
+/// An aligned plain-text table, one line per row: setting, path, light
+/// count, cutoff, frame median and p10–p90 spread (ms), GPU frame median
+/// (only if some row has one), each pass's median (ms), speed-up against the
+/// first "forward" row with the same light count, RMSE and max abs error
+/// (x255, in 8-bit steps), % of pixels off by more than 1/255, and the clock.
+/// Missing values are "—".
+pub fn table(rows: &[BenchRow]) -> String {
+    let passes = pass_names(rows);
+    let any_gpu = rows.iter().any(|r| r.gpu_frame_ms.is_some());
+
+    // (header, right-aligned)
+    let mut header: Vec<(String, bool)> = vec![
+        ("setting".into(), false),
+        ("path".into(), false),
+        ("lights".into(), true),
+        ("cutoff".into(), true),
+        ("frame ms".into(), true),
+        ("p10–p90 ms".into(), true),
+    ];
+    if any_gpu {
+        header.push(("gpu ms".into(), true));
+    }
+    for p in &passes {
+        header.push((format!("{p} ms"), true));
+    }
+    for h in ["speed-up", "RMSE×255", "max×255", "% >1/255"] {
+        header.push((h.into(), true));
+    }
+    header.push(("clock".into(), false));
+
+    let body: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            let mut cells = vec![
+                r.setting.clone(),
+                r.path.clone(),
+                r.lights.to_string(),
+                r.cutoff
+                    .map_or_else(|| DASH.to_string(), |c| cutoff_label(c, Some(4))),
+                ms(r.frame.median),
+                if r.frame.p10.is_finite() && r.frame.p90.is_finite() {
+                    format!("{}–{}", ms(r.frame.p10), ms(r.frame.p90))
+                } else {
+                    DASH.to_string()
+                },
+            ];
+            if any_gpu {
+                cells.push(
+                    r.gpu_frame_ms
+                        .map_or_else(|| DASH.to_string(), |s| ms(s.median)),
+                );
+            }
+            for p in &passes {
+                cells.push(pass_stats(r, p).map_or_else(|| DASH.to_string(), |s| ms(s.median)));
+            }
+            cells.push(
+                speedup_vs_forward(rows, r)
+                    .map_or_else(|| DASH.to_string(), |s| format!("{s:.2}×")),
+            );
+            cells.push(num(r.rmse * 255.0, 3));
+            cells.push(num(r.max_abs * 255.0, 1));
+            cells.push(num(r.pct_over_1, 3));
+            cells.push(r.clock.clone());
+            cells
+        })
+        .collect();
+
+    let width = |i: usize| {
+        body.iter()
+            .map(|c| c[i].chars().count())
+            .chain(std::iter::once(header[i].0.chars().count()))
+            .max()
+            .unwrap_or(0)
+    };
+    let widths: Vec<usize> = (0..header.len()).map(width).collect();
+
+    let line = |cells: &mut dyn Iterator<Item = &str>| -> String {
+        let mut s = String::new();
+        for (i, c) in cells.enumerate() {
+            if i > 0 {
+                s.push_str("  ");
+            }
+            let pad = widths[i].saturating_sub(c.chars().count());
+            if header[i].1 {
+                s.extend(std::iter::repeat_n(' ', pad));
+                s.push_str(c);
+            } else {
+                s.push_str(c);
+                s.extend(std::iter::repeat_n(' ', pad));
+            }
+        }
+        s.trim_end().to_string()
+    };
+
+    let mut out = String::new();
+    out.push_str(&line(&mut header.iter().map(|h| h.0.as_str())));
+    out.push('\n');
+    let total = widths.iter().sum::<usize>() + 2 * widths.len().saturating_sub(1);
+    out.extend(std::iter::repeat_n('-', total));
+    out.push('\n');
+    for cells in &body {
+        out.push_str(&line(&mut cells.iter().map(String::as_str)));
+        out.push('\n');
+    }
+    out
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::*;
+
+    fn stats(median: f64) -> Stats {
+        Stats {
+            median,
+            p10: median * 0.9,
+            p90: median * 1.2,
+            min: median * 0.8,
+            max: median * 1.5,
+            n: 100,
+        }
+    }
+
+    pub(crate) fn rows() -> Vec<BenchRow> {
+        let row = |setting: &str, path: &str, lights, cutoff, frame: f64, rmse: f64| BenchRow {
+            setting: setting.into(),
+            path: path.into(),
+            lights,
+            cutoff,
+            passes: vec![
+                ("geometry".into(), stats(1.25)),
+                ("lighting".into(), stats(frame - 1.25)),
+            ],
+            frame: stats(frame),
+            gpu_frame_ms: None,
+            clock: "GL_TIME_ELAPSED".into(),
+            rmse,
+            max_abs: rmse * 4.0,
+            pct_over_1: rmse * 1000.0,
+        };
+        let mut v = vec![
+            row("forward 64", "forward", 64, None, 8.0, 0.0),
+            row("forward 256", "forward", 256, None, 30.0, 0.0),
+            row("deferred 256", "deferred", 256, None, 6.0, 0.0005),
+            row(
+                "volumes 256 5/256",
+                "volumes",
+                256,
+                Some(5.0 / 256.0),
+                2.5,
+                0.002,
+            ),
+            row(
+                "volumes 256 1/256",
+                "volumes",
+                256,
+                Some(1.0 / 256.0),
+                3.75,
+                0.0008,
+            ),
+            row(
+                "volumes 1024",
+                "volumes",
+                1024,
+                Some(5.0 / 256.0),
+                9.0,
+                0.002,
+            ),
+        ];
+        v[0].passes.truncate(1);
+        v[0].passes[0].0 = "forward".into();
+        v[3].gpu_frame_ms = Some(stats(2.25));
+        v
+    }
+
+    #[test]
+    fn speedup_uses_first_forward_row_with_same_lights() {
+        let r = rows();
+        assert_eq!(speedup_vs_forward(&r, &r[1]), Some(1.0));
+        assert_eq!(speedup_vs_forward(&r, &r[2]), Some(5.0));
+        assert_eq!(speedup_vs_forward(&r, &r[3]), Some(12.0));
+        assert_eq!(speedup_vs_forward(&r, &r[5]), None);
+    }
+
+    #[test]
+    fn table_contains_the_values() {
+        let t = table(&rows());
+        println!("{t}");
+        let lines: Vec<&str> = t.lines().collect();
+        assert_eq!(lines.len(), 2 + 6);
+        for h in [
+            "setting",
+            "frame ms",
+            "p10–p90 ms",
+            "gpu ms",
+            "geometry ms",
+            "lighting ms",
+            "forward ms",
+            "speed-up",
+            "RMSE×255",
+            "max×255",
+            "% >1/255",
+            "clock",
+        ] {
+            assert!(lines[0].contains(h), "header lacks {h}: {}", lines[0]);
+        }
+        let vol = lines
+            .iter()
+            .find(|l| l.starts_with("volumes 256 5/256"))
+            .unwrap();
+        for v in [
+            "5/256",
+            "2.500",
+            "2.250–3.000",
+            "2.250",
+            "1.250",
+            "12.00×",
+            "0.510",
+            "2.0",
+            "2.000",
+            "GL_TIME_ELAPSED",
+        ] {
+            assert!(vol.contains(v), "row lacks {v}: {vol}");
+        }
+        let fwd = lines.iter().find(|l| l.starts_with("forward 256")).unwrap();
+        assert!(fwd.contains("30.00") && fwd.contains("1.00×"), "{fwd}");
+        let v1024 = lines
+            .iter()
+            .find(|l| l.starts_with("volumes 1024"))
+            .unwrap();
+        assert!(v1024.contains(DASH), "{v1024}");
+        // Aligned: every data line has the same width as the header when
+        // padded (measured in chars; trailing spaces trimmed).
+        let col = lines[0].chars().count() - "clock".len();
+        for l in &lines[2..] {
+            let clock: String = l.chars().skip(col).collect();
+            assert_eq!(clock, "GL_TIME_ELAPSED", "misaligned: {l}");
+        }
+        // No rows: just the header.
+        assert_eq!(table(&[]).lines().count(), 2);
+    }
+
+    #[test]
+    fn cutoff_labels() {
+        assert_eq!(cutoff_label(5.0 / 256.0, Some(4)), "5/256");
+        assert_eq!(cutoff_label(5.0 / 256.0, None), "5/256");
+        assert_eq!(cutoff_label(0.01, Some(4)), "0.0100");
+        assert_eq!(cutoff_label(0.01, None), "0.01");
+        assert_eq!(cutoff_label(f32::NAN, None), DASH);
+    }
+}

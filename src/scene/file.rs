@@ -1,0 +1,188 @@
+//! The scene file format, exactly as written in TOML (scenes/*.toml), with
+//! serde's defaults for every key that may be left out. `resolve` checks these
+//! values and turns them into a `Scene`.
+
+use serde::Deserialize;
+use std::collections::HashMap;
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SceneFile {
+    pub(super) name: Option<String>,
+    pub(super) camera: CameraFile,
+    #[serde(default)]
+    pub(super) render: RenderFile,
+    #[serde(default)]
+    pub(super) lights: Vec<LightFile>,
+    pub(super) light_grid: Option<LightGridFile>,
+    #[serde(default)]
+    pub(super) materials: HashMap<String, MaterialFile>,
+    #[serde(default)]
+    pub(super) objects: Vec<ObjectFile>,
+}
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CameraFile {
+    #[serde(default = "perspective_str")]
+    pub(super) projection: String,
+    pub(super) eye: [f32; 3],
+    pub(super) target: [f32; 3],
+    #[serde(default = "up_y")]
+    pub(super) up: [f32; 3],
+    #[serde(default = "default_fov")]
+    pub(super) fov_y: f32,
+    /// Orthographic: half the height of the view box (width follows the aspect).
+    pub(super) half_height: Option<f32>,
+    #[serde(default = "default_near")]
+    pub(super) near: f32,
+    #[serde(default = "default_far")]
+    pub(super) far: f32,
+}
+
+fn perspective_str() -> String {
+    "perspective".into()
+}
+fn up_y() -> [f32; 3] {
+    [0.0, 1.0, 0.0]
+}
+fn default_fov() -> f32 {
+    50.0
+}
+fn default_near() -> f32 {
+    0.1
+}
+fn default_far() -> f32 {
+    100.0
+}
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields, default)]
+pub(super) struct RenderFile {
+    pub(super) path: String,
+    pub(super) shading: String,
+    pub(super) size: [u32; 2],
+    pub(super) background: [f32; 3],
+    pub(super) ambient: [f32; 3],
+    pub(super) depth_func: String,
+    pub(super) cutoff: f32,
+    pub(super) stencil_volumes: bool,
+    pub(super) accumulation: String,
+}
+
+impl Default for RenderFile {
+    fn default() -> Self {
+        RenderFile {
+            path: "forward".into(),
+            shading: "phong".into(),
+            size: [1280, 720],
+            background: [0.0, 0.0, 0.0],
+            ambient: [0.03, 0.03, 0.03],
+            depth_func: "less".into(),
+            cutoff: 5.0 / 256.0,
+            stencil_volumes: false,
+            accumulation: "rgba16f".into(),
+        }
+    }
+}
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+pub(super) struct LightFile {
+    #[serde(rename = "type")]
+    pub(super) kind: String,
+    pub(super) position: Option<[f32; 3]>,
+    pub(super) direction: Option<[f32; 3]>,
+    #[serde(default = "white")]
+    pub(super) color: [f32; 3],
+    #[serde(default = "one")]
+    pub(super) intensity: f32,
+    /// [Kc, Kl, Kq]; notes 04's defaults.
+    #[serde(default = "default_attenuation")]
+    pub(super) attenuation: [f32; 3],
+    /// Spot cone, degrees from the axis (notes 04: 20 and 30).
+    #[serde(default = "spot_inner")]
+    pub(super) inner_angle: f32,
+    #[serde(default = "spot_outer")]
+    pub(super) outer_angle: f32,
+    #[serde(default)]
+    pub(super) shadow: bool,
+}
+
+fn white() -> [f32; 3] {
+    [1.0, 1.0, 1.0]
+}
+fn one() -> f32 {
+    1.0
+}
+fn default_attenuation() -> [f32; 3] {
+    [1.0, 0.09, 0.032]
+}
+fn spot_inner() -> f32 {
+    20.0
+}
+fn spot_outer() -> f32 {
+    30.0
+}
+
+/// Many point lights placed by a seeded generator (the notes' 256-light example).
+#[derive(Deserialize, Debug, Clone)]
+#[serde(deny_unknown_fields)]
+pub(super) struct LightGridFile {
+    pub(super) count: usize,
+    #[serde(default = "one_u64")]
+    pub(super) seed: u64,
+    /// [xmin, xmax, zmin, zmax]
+    pub(super) area: [f32; 4],
+    pub(super) height: [f32; 2],
+    #[serde(default = "one")]
+    pub(super) intensity: f32,
+    #[serde(default = "default_attenuation")]
+    pub(super) attenuation: [f32; 3],
+}
+
+fn one_u64() -> u64 {
+    1
+}
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+pub(super) struct MaterialFile {
+    #[serde(default = "grey")]
+    pub(super) diffuse: [f32; 3],
+    pub(super) diffuse_texture: Option<String>,
+    #[serde(default = "spec_default")]
+    pub(super) specular: [f32; 3],
+    #[serde(default = "shininess_default")]
+    pub(super) shininess: f32,
+}
+
+fn grey() -> [f32; 3] {
+    [0.6, 0.6, 0.6]
+}
+fn spec_default() -> [f32; 3] {
+    [0.3, 0.3, 0.3]
+}
+fn shininess_default() -> f32 {
+    32.0
+}
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ObjectFile {
+    pub(super) name: Option<String>,
+    pub(super) mesh: String,
+    pub(super) material: Option<String>,
+    #[serde(default)]
+    pub(super) position: [f32; 3],
+    /// Degrees about x, then y, then z.
+    #[serde(default)]
+    pub(super) rotation: [f32; 3],
+    #[serde(default = "unit_scale")]
+    pub(super) scale: [f32; 3],
+    pub(super) parent: Option<String>,
+}
+
+fn unit_scale() -> [f32; 3] {
+    [1.0, 1.0, 1.0]
+}

@@ -1,0 +1,56 @@
+//! `[light_grid]`: many point lights placed by a seeded generator (the notes'
+//! 256-light example), the same lights for the same seed everywhere.
+
+use super::file::LightGridFile;
+use super::{Light, LightKind};
+use glam::Vec3;
+
+/// A small deterministic generator (SplitMix64) so scenes need no rand crate
+/// and the same seed gives the same lights everywhere.
+struct SplitMix(u64);
+impl SplitMix {
+    fn next_f32(&mut self) -> f32 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
+pub(super) fn generate_lights(g: &LightGridFile) -> Vec<Light> {
+    let mut rng = SplitMix(g.seed);
+    let [x0, x1, z0, z1] = g.area;
+    (0..g.count)
+        .map(|_| {
+            let x = x0 + (x1 - x0) * rng.next_f32();
+            let z = z0 + (z1 - z0) * rng.next_f32();
+            let y = g.height[0] + (g.height[1] - g.height[0]) * rng.next_f32();
+            // A saturated hue: one channel full, one random, one low.
+            let hue = rng.next_f32() * 6.0;
+            let f = hue.fract();
+            let color = match hue as u32 {
+                0 => Vec3::new(1.0, f, 0.1),
+                1 => Vec3::new(1.0 - f, 1.0, 0.1),
+                2 => Vec3::new(0.1, 1.0, f),
+                3 => Vec3::new(0.1, 1.0 - f, 1.0),
+                4 => Vec3::new(f, 0.1, 1.0),
+                _ => Vec3::new(1.0, 0.1, 1.0 - f),
+            };
+            Light {
+                kind: LightKind::Point,
+                position: Vec3::new(x, y, z),
+                direction: Vec3::NEG_Y,
+                color,
+                intensity: g.intensity,
+                kc: g.attenuation[0],
+                kl: g.attenuation[1],
+                kq: g.attenuation[2],
+                inner_angle: 20.0,
+                outer_angle: 30.0,
+                shadow: false,
+            }
+        })
+        .collect()
+}

@@ -1,0 +1,254 @@
+//! Scene files (scenes/*.toml), read with serde + toml.
+//!
+//! Colours in a scene file are *linear* RGB, the values the lighting
+//! equations use; textures are sRGB PNGs and are decoded to linear by the GPU.
+//! Paths (meshes, textures) are relative to the scene file. Unknown keys and
+//! bad values are errors that name the file, the key and what was expected.
+//!
+//! This folder: the scene types the renderer uses (here), the file format as
+//! written in TOML (`file`), checking it and turning it into a [`Scene`]
+//! (`resolve`), and the seeded many-lights generator (`light_grid`).
+
+mod file;
+mod light_grid;
+mod resolve;
+
+use crate::attenuation;
+use crate::math;
+use anyhow::{Context as _, Result, anyhow};
+use file::SceneFile;
+use glam::{Mat4, Vec3};
+use light_grid::generate_lights;
+use resolve::resolve;
+use std::path::{Path, PathBuf};
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    Perspective { fov_y_degrees: f32 },
+    Orthographic { half_height: f32 },
+}
+
+#[derive(Clone, Debug)]
+pub struct Camera {
+    pub eye: Vec3,
+    pub target: Vec3,
+    pub up: Vec3,
+    pub projection: Projection,
+    pub near: f32,
+    pub far: f32,
+}
+
+impl Camera {
+    pub fn view(&self) -> Mat4 {
+        math::look_at(self.eye, self.target, self.up)
+    }
+    pub fn projection(&self, aspect: f32) -> Mat4 {
+        match self.projection {
+            Projection::Perspective { fov_y_degrees } => {
+                math::perspective(fov_y_degrees.to_radians(), aspect, self.near, self.far)
+            }
+            Projection::Orthographic { half_height } => {
+                let hw = half_height * aspect;
+                math::orthographic(-hw, hw, -half_height, half_height, self.near, self.far)
+            }
+        }
+    }
+}
+
+/// Which renderer runs the frame (issue 3 adds the deferred ones).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum)]
+pub enum RenderPath {
+    /// Every light for every fragment in one pass (notes 04 "forward rendering"): the reference.
+    Forward,
+    /// G-buffer, then one full-screen pass per light ("our current deferred shader").
+    Deferred,
+    /// G-buffer, then a volume per light (sphere, cone, full-screen quad), then composite.
+    Volumes,
+    /// Deferred lighting / light pre-pass (notes 02): diffuse and specular accumulated apart.
+    Prepass,
+}
+
+impl RenderPath {
+    pub fn parse(s: &str) -> Option<RenderPath> {
+        Some(match s {
+            "forward" => RenderPath::Forward,
+            "deferred" => RenderPath::Deferred,
+            "volumes" => RenderPath::Volumes,
+            "prepass" => RenderPath::Prepass,
+            _ => return None,
+        })
+    }
+    pub fn name(self) -> &'static str {
+        match self {
+            RenderPath::Forward => "forward",
+            RenderPath::Deferred => "deferred",
+            RenderPath::Volumes => "volumes",
+            RenderPath::Prepass => "prepass",
+        }
+    }
+}
+
+/// Notes 01 §8.2 shading modes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Shading {
+    /// One colour per triangle (lit at its centroid with its face normal).
+    Flat,
+    /// Lighting per vertex, interpolated.
+    Gouraud,
+    /// Lighting per fragment.
+    Phong,
+}
+
+impl Shading {
+    pub fn parse(s: &str) -> Option<Shading> {
+        Some(match s {
+            "flat" => Shading::Flat,
+            "gouraud" => Shading::Gouraud,
+            "phong" => Shading::Phong,
+            _ => return None,
+        })
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct RenderSettings {
+    pub path: RenderPath,
+    pub shading: Shading,
+    pub size: (u32, u32),
+    pub background: Vec3,
+    pub ambient: Vec3,
+    /// GL_LESS (notes 02: "fails when d >= D") or GL_LEQUAL (notes 01: "passes when z <= D").
+    pub depth_func: u32,
+    /// Light-volume cutoff, a fraction of the light's brightest channel (notes 04: 5/256).
+    pub cutoff: f32,
+    /// Light volumes: use the two-sided stencil test to mark lit pixels first.
+    pub stencil_volumes: bool,
+    /// Internal format of the light accumulation target (RGBA16F or RGBA32F).
+    pub accumulation: u32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightKind {
+    Directional,
+    Point,
+    Spot,
+}
+
+#[derive(Clone, Debug)]
+pub struct Light {
+    pub kind: LightKind,
+    pub position: Vec3,
+    /// Unit direction the light shines in (directional, spot).
+    pub direction: Vec3,
+    pub color: Vec3,
+    pub intensity: f32,
+    pub kc: f32,
+    pub kl: f32,
+    pub kq: f32,
+    pub inner_angle: f32,
+    pub outer_angle: f32,
+    pub shadow: bool,
+}
+
+impl Light {
+    /// colour x intensity, what the shader multiplies by.
+    pub fn radiance(&self) -> Vec3 {
+        self.color * self.intensity
+    }
+    /// The brightest channel, I_max in notes 04.
+    pub fn i_max(&self) -> f32 {
+        self.radiance().max_element()
+    }
+    /// Light-volume radius at `cutoff` (None: no finite volume, e.g. Kl = Kq = 0,
+    /// or a directional light).
+    pub fn volume_radius(&self, cutoff: f32) -> Option<f32> {
+        match self.kind {
+            LightKind::Directional => None,
+            _ => attenuation::light_volume_radius(self.kc, self.kl, self.kq, self.i_max(), cutoff),
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct Material {
+    pub name: String,
+    pub diffuse: Vec3,
+    pub diffuse_texture: Option<PathBuf>,
+    pub specular: Vec3,
+    pub shininess: f32,
+}
+
+/// Where a mesh comes from.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum MeshSource {
+    Sphere,
+    Icosphere,
+    Cube,
+    Plane,
+    Cylinder,
+    Cone,
+    Torus,
+    Obj(PathBuf),
+}
+
+impl MeshSource {
+    pub const BUILTIN: &'static str = "sphere, icosphere, cube, plane, cylinder, cone, torus";
+}
+
+#[derive(Clone, Debug)]
+pub struct Object {
+    pub name: String,
+    pub mesh: MeshSource,
+    pub material: usize,
+    /// Model matrix including every parent's.
+    pub model: Mat4,
+}
+
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub name: String,
+    pub path: PathBuf,
+    pub camera: Camera,
+    pub render: RenderSettings,
+    pub lights: Vec<Light>,
+    pub materials: Vec<Material>,
+    pub objects: Vec<Object>,
+}
+
+impl Scene {
+    /// Read, check and resolve a scene file.
+    pub fn load(path: &Path) -> Result<Scene> {
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("cannot read scene file {}", path.display()))?;
+        Scene::parse(&text, path)
+    }
+
+    /// Parse scene text; `path` names the file in messages and anchors relative paths.
+    pub fn parse(text: &str, path: &Path) -> Result<Scene> {
+        let file: SceneFile = toml::from_str(text)
+            .map_err(|e| anyhow!("{}: {}", path.display(), e.to_string().trim_end()))?;
+        resolve(file, path).map_err(|e| anyhow!("{}: {e}", path.display()))
+    }
+
+    /// Replace the generated lights with `count` of them (`gloss bench --lights`).
+    /// Scenes without a `[light_grid]` keep their lights.
+    pub fn set_light_count(&mut self, count: usize) -> Result<()> {
+        let text = std::fs::read_to_string(&self.path)?;
+        let file: SceneFile = toml::from_str(&text)?;
+        let mut grid = file.light_grid.ok_or_else(|| {
+            anyhow!(
+                "{}: has no [light_grid] to vary the light count of",
+                self.path.display()
+            )
+        })?;
+        grid.count = count;
+        let fixed = file.lights.len();
+        self.lights.truncate(fixed);
+        self.lights.extend(generate_lights(&grid));
+        Ok(())
+    }
+
+    pub fn aspect(&self) -> f32 {
+        self.render.size.0 as f32 / self.render.size.1 as f32
+    }
+}

@@ -1,0 +1,390 @@
+//! Checking a parsed scene file and turning it into a [`Scene`]: every value
+//! is validated (errors name the key and what was expected), names are
+//! resolved to indices and object matrices are chained through their parents.
+//! One function per section of the file, in the order they are checked.
+
+use super::file::SceneFile;
+use super::light_grid::generate_lights;
+use super::{
+    Camera, Light, LightKind, Material, MeshSource, Object, Projection, RenderPath, RenderSettings,
+    Scene, Shading,
+};
+use crate::attenuation;
+use crate::math;
+use anyhow::{Result, anyhow, bail};
+use glam::Vec3;
+use std::collections::HashMap;
+use std::path::Path;
+
+fn finite(key: &str, v: &[f32]) -> Result<()> {
+    if v.iter().any(|x| !x.is_finite()) {
+        bail!("{key}: expected finite numbers, found {v:?}");
+    }
+    Ok(())
+}
+
+fn non_negative(key: &str, v: &[f32]) -> Result<()> {
+    finite(key, v)?;
+    if v.iter().any(|x| *x < 0.0) {
+        bail!("{key}: expected values >= 0, found {v:?}");
+    }
+    Ok(())
+}
+
+/// Checks every section of `f` (read from `path`) and builds the [`Scene`].
+pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
+    let base = path.parent().unwrap_or(Path::new("."));
+    let name = f.name.clone().unwrap_or_else(|| {
+        path.file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    });
+
+    let camera = camera(&f)?;
+    let render = render_settings(&f)?;
+    let lights = lights(&f)?;
+    let (materials, material_index) = materials(&f, base)?;
+    let objects = objects(&f, &material_index, base)?;
+
+    Ok(Scene {
+        name,
+        path: path.to_path_buf(),
+        camera,
+        render,
+        lights,
+        materials,
+        objects,
+    })
+}
+
+/// Camera (the `[camera]` table).
+fn camera(f: &SceneFile) -> Result<Camera> {
+    let c = &f.camera;
+    finite("camera.eye", &c.eye)?;
+    finite("camera.target", &c.target)?;
+    finite("camera.up", &c.up)?;
+    finite("camera.near/far", &[c.near, c.far])?;
+    let eye = Vec3::from(c.eye);
+    let target = Vec3::from(c.target);
+    let up = Vec3::from(c.up);
+    if (target - eye).length() < 1e-6 {
+        bail!("camera: eye and target are the same point");
+    }
+    if (target - eye)
+        .normalize()
+        .cross(up.normalize_or_zero())
+        .length()
+        < 1e-6
+    {
+        bail!("camera.up: must not be parallel to the view direction (or zero)");
+    }
+    if !(c.near > 0.0 && c.far > c.near) {
+        bail!(
+            "camera.near/far: expected 0 < near < far, found near = {}, far = {}",
+            c.near,
+            c.far
+        );
+    }
+    let projection = match c.projection.as_str() {
+        "perspective" => {
+            if !(c.fov_y > 0.5 && c.fov_y < 179.0) {
+                bail!(
+                    "camera.fov_y: expected degrees in (0.5, 179), found {}",
+                    c.fov_y
+                );
+            }
+            Projection::Perspective {
+                fov_y_degrees: c.fov_y,
+            }
+        }
+        "orthographic" => {
+            let h = c.half_height.ok_or_else(|| {
+                anyhow!("camera.half_height: required for an orthographic camera")
+            })?;
+            if !(h.is_finite() && h > 0.0) {
+                bail!("camera.half_height: expected a positive number, found {h}");
+            }
+            Projection::Orthographic { half_height: h }
+        }
+        other => bail!(
+            "camera.projection: expected \"perspective\" or \"orthographic\", found \"{other}\""
+        ),
+    };
+    Ok(Camera {
+        eye,
+        target,
+        up,
+        projection,
+        near: c.near,
+        far: c.far,
+    })
+}
+
+/// Render settings (the `[render]` table).
+fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
+    let r = &f.render;
+    Ok(RenderSettings {
+        path: RenderPath::parse(&r.path).ok_or_else(|| {
+            anyhow!(
+                "render.path: expected forward, deferred, volumes or prepass, found \"{}\"",
+                r.path
+            )
+        })?,
+        shading: Shading::parse(&r.shading).ok_or_else(|| {
+            anyhow!(
+                "render.shading: expected flat, gouraud or phong, found \"{}\"",
+                r.shading
+            )
+        })?,
+        size: {
+            let [w, h] = r.size;
+            if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
+                bail!("render.size: expected [width, height] in 1..=8192, found [{w}, {h}]");
+            }
+            (w, h)
+        },
+        background: {
+            non_negative("render.background", &r.background)?;
+            Vec3::from(r.background)
+        },
+        ambient: {
+            non_negative("render.ambient", &r.ambient)?;
+            Vec3::from(r.ambient)
+        },
+        depth_func: match r.depth_func.as_str() {
+            "less" => glow::LESS,
+            "lequal" => glow::LEQUAL,
+            other => bail!("render.depth_func: expected \"less\" or \"lequal\", found \"{other}\""),
+        },
+        cutoff: {
+            if !(r.cutoff.is_finite() && r.cutoff > 0.0 && r.cutoff < 1.0) {
+                bail!(
+                    "render.cutoff: expected a fraction in (0, 1), found {}",
+                    r.cutoff
+                );
+            }
+            r.cutoff
+        },
+        stencil_volumes: r.stencil_volumes,
+        accumulation: match r.accumulation.as_str() {
+            "rgba16f" => glow::RGBA16F,
+            "rgba32f" => glow::RGBA32F,
+            other => {
+                bail!("render.accumulation: expected \"rgba16f\" or \"rgba32f\", found \"{other}\"")
+            }
+        },
+    })
+}
+
+/// Lights: the `[[lights]]` list, then the generated `[light_grid]` ones.
+fn lights(f: &SceneFile) -> Result<Vec<Light>> {
+    let mut lights = Vec::new();
+    for (i, l) in f.lights.iter().enumerate() {
+        let key = |k: &str| format!("lights[{i}].{k}");
+        non_negative(&key("color"), &l.color)?;
+        non_negative(&key("intensity"), &[l.intensity])?;
+        let [kc, kl, kq] = l.attenuation;
+        attenuation::validate_attenuation(kc, kl, kq)
+            .map_err(|e| anyhow!("{}: {e}", key("attenuation")))?;
+        let kind = match l.kind.as_str() {
+            "directional" => LightKind::Directional,
+            "point" => LightKind::Point,
+            "spot" => LightKind::Spot,
+            other => bail!(
+                "{}: expected directional, point or spot, found \"{other}\"",
+                key("type")
+            ),
+        };
+        let position = match (kind, l.position) {
+            (LightKind::Directional, _) => Vec3::ZERO,
+            (_, Some(p)) => {
+                finite(&key("position"), &p)?;
+                Vec3::from(p)
+            }
+            (_, None) => bail!("{}: required for a {} light", key("position"), l.kind),
+        };
+        let direction = match (kind, l.direction) {
+            (LightKind::Point, _) => Vec3::NEG_Y,
+            (_, Some(d)) => {
+                finite(&key("direction"), &d)?;
+                let d = Vec3::from(d);
+                if d.length() < 1e-6 {
+                    bail!("{}: must not be zero", key("direction"));
+                }
+                d.normalize()
+            }
+            (_, None) => bail!("{}: required for a {} light", key("direction"), l.kind),
+        };
+        if kind == LightKind::Spot
+            && !(l.inner_angle >= 0.0 && l.inner_angle <= l.outer_angle && l.outer_angle < 89.0)
+        {
+            bail!(
+                "{}: expected 0 <= inner_angle <= outer_angle < 89 degrees, found {} and {}",
+                key("inner_angle/outer_angle"),
+                l.inner_angle,
+                l.outer_angle
+            );
+        }
+        lights.push(Light {
+            kind,
+            position,
+            direction,
+            color: Vec3::from(l.color),
+            intensity: l.intensity,
+            kc,
+            kl,
+            kq,
+            inner_angle: l.inner_angle,
+            outer_angle: l.outer_angle,
+            shadow: l.shadow,
+        });
+    }
+    if let Some(g) = &f.light_grid {
+        finite("light_grid.area", &g.area)?;
+        finite("light_grid.height", &g.height)?;
+        non_negative("light_grid.intensity", &[g.intensity])?;
+        let [kc, kl, kq] = g.attenuation;
+        attenuation::validate_attenuation(kc, kl, kq)
+            .map_err(|e| anyhow!("light_grid.attenuation: {e}"))?;
+        if g.count > 100_000 {
+            bail!("light_grid.count: at most 100000 lights, found {}", g.count);
+        }
+        lights.extend(generate_lights(g));
+    }
+    Ok(lights)
+}
+
+/// Materials (sorted by name so indices are stable); also returns the index
+/// of each material by name.
+fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<String, usize>)> {
+    let mut names: Vec<&String> = f.materials.keys().collect();
+    names.sort();
+    let mut materials = vec![Material {
+        name: "default".into(),
+        diffuse: Vec3::splat(0.6),
+        diffuse_texture: None,
+        specular: Vec3::splat(0.3),
+        shininess: 32.0,
+    }];
+    let mut material_index = HashMap::new();
+    for n in names {
+        let m = &f.materials[n];
+        let key = |k: &str| format!("materials.{n}.{k}");
+        non_negative(&key("diffuse"), &m.diffuse)?;
+        non_negative(&key("specular"), &m.specular)?;
+        if !(m.shininess.is_finite() && m.shininess >= 1.0 && m.shininess <= 4096.0) {
+            bail!(
+                "{}: expected a number in 1..=4096, found {}",
+                key("shininess"),
+                m.shininess
+            );
+        }
+        let diffuse_texture = match &m.diffuse_texture {
+            Some(t) => {
+                let p = base.join(t);
+                if !p.is_file() {
+                    bail!(
+                        "{}: file {} does not exist",
+                        key("diffuse_texture"),
+                        p.display()
+                    );
+                }
+                Some(p)
+            }
+            None => None,
+        };
+        material_index.insert(n.clone(), materials.len());
+        materials.push(Material {
+            name: n.clone(),
+            diffuse: Vec3::from(m.diffuse),
+            diffuse_texture,
+            specular: Vec3::from(m.specular),
+            shininess: m.shininess,
+        });
+    }
+    Ok((materials, material_index))
+}
+
+/// Objects: local matrices first, then parents (in any order, no cycles).
+fn objects(
+    f: &SceneFile,
+    material_index: &HashMap<String, usize>,
+    base: &Path,
+) -> Result<Vec<Object>> {
+    let mut locals = Vec::new();
+    let mut object_names: HashMap<String, usize> = HashMap::new();
+    for (i, o) in f.objects.iter().enumerate() {
+        let key = |k: &str| format!("objects[{i}].{k}");
+        finite(&key("position"), &o.position)?;
+        finite(&key("rotation"), &o.rotation)?;
+        finite(&key("scale"), &o.scale)?;
+        let mesh = match o.mesh.as_str() {
+            "sphere" => MeshSource::Sphere,
+            "icosphere" => MeshSource::Icosphere,
+            "cube" => MeshSource::Cube,
+            "plane" => MeshSource::Plane,
+            "cylinder" => MeshSource::Cylinder,
+            "cone" => MeshSource::Cone,
+            "torus" => MeshSource::Torus,
+            file if file.ends_with(".obj") => {
+                let p = base.join(file);
+                if !p.is_file() {
+                    bail!("{}: file {} does not exist", key("mesh"), p.display());
+                }
+                MeshSource::Obj(p)
+            }
+            other => bail!(
+                "{}: expected one of {} or a path to an .obj file, found \"{other}\"",
+                key("mesh"),
+                MeshSource::BUILTIN
+            ),
+        };
+        let material = match &o.material {
+            None => 0,
+            Some(m) => *material_index.get(m).ok_or_else(|| {
+                anyhow!(
+                    "{}: no material named \"{m}\" in [materials]",
+                    key("material")
+                )
+            })?,
+        };
+        let name = o.name.clone().unwrap_or_else(|| format!("object{i}"));
+        if object_names.insert(name.clone(), i).is_some() {
+            bail!("{}: two objects are named \"{name}\"", key("name"));
+        }
+        let [rx, ry, rz] = o.rotation.map(f32::to_radians);
+        let [sx, sy, sz] = o.scale;
+        let [tx, ty, tz] = o.position;
+        // T * Rz * Ry * Rx * S (column vectors: scale first, then rotate x, y, z, then move).
+        let local = math::translate(tx, ty, tz)
+            * math::rotate_z(rz)
+            * math::rotate_y(ry)
+            * math::rotate_x(rx)
+            * math::scale(sx, sy, sz);
+        locals.push((name, mesh, material, local));
+    }
+    let mut objects = Vec::new();
+    for (i, o) in f.objects.iter().enumerate() {
+        let mut model = locals[i].3;
+        let mut parent = o.parent.clone();
+        let mut steps = 0;
+        while let Some(p) = parent {
+            let &pi = object_names
+                .get(&p)
+                .ok_or_else(|| anyhow!("objects[{i}].parent: no object named \"{p}\""))?;
+            steps += 1;
+            if steps > f.objects.len() {
+                bail!("objects[{i}].parent: the parent chain is a cycle");
+            }
+            model = locals[pi].3 * model;
+            parent = f.objects[pi].parent.clone();
+        }
+        objects.push(Object {
+            name: locals[i].0.clone(),
+            mesh: locals[i].1.clone(),
+            material: locals[i].2,
+            model,
+        });
+    }
+    Ok(objects)
+}

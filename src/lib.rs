@@ -15,6 +15,7 @@
 //! | 7 | `renderer` | runs the plan |
 //! | 8 | `bench`, `demo` | the tools; `src/main.rs` is the command line |
 
+pub mod assets;
 pub mod bench;
 pub mod demo;
 pub mod frame;
@@ -26,14 +27,3 @@ pub mod math;
 pub mod renderer;
 pub mod scene;
 pub mod techniques;
-
-// TEMPORARY until scene/ is merged.
-pub use lighting::attenuation;
-pub trait GlEnumShim {
-    fn gl(self) -> u32;
-}
-impl GlEnumShim for u32 {
-    fn gl(self) -> u32 {
-        self
-    }
-}

@@ -2,6 +2,7 @@
 
 use anyhow::{Context as _, Result, anyhow, bail};
 use clap::{Parser, Subcommand};
+use gloss::assets;
 use gloss::gl::{Backend, Headless};
 use gloss::renderer::{Output, render_scene};
 use gloss::scene::{RenderPath, Scene, Shading};
@@ -60,6 +61,8 @@ enum Command {
         #[arg(long)]
         lights: Option<usize>,
     },
+    /// List the scenes shipped inside gloss (usable from any directory by name).
+    Scenes,
     /// Measure speed against error for render paths, light counts and cutoffs.
     Bench(gloss::bench::BenchArgs),
 }
@@ -80,13 +83,9 @@ fn main() -> ExitCode {
     }
 }
 
-/// The default scene: scenes/default.toml here, or next to the sources gloss was built from.
+/// The default scene: scenes/default.toml here if there is one, else the shipped one.
 fn default_scene() -> PathBuf {
-    let local = PathBuf::from("scenes/default.toml");
-    if local.is_file() {
-        return local;
-    }
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/default.toml")
+    assets::scene_path(Path::new("scenes/default.toml"))
 }
 
 fn headless_backend(b: Option<Backend>) -> Result<Backend> {
@@ -119,7 +118,7 @@ fn load_scene(
     render_path: Option<RenderPath>,
     lights: Option<usize>,
 ) -> Result<Scene> {
-    let mut scene = Scene::load(path)?;
+    let mut scene = Scene::load(&assets::scene_path(path))?;
     if let Some(p) = render_path {
         scene.render.path = p;
     }
@@ -132,7 +131,10 @@ fn load_scene(
 fn run(cli: Cli) -> Result<()> {
     match cli.command {
         None => {
-            let scene_path = cli.scene.unwrap_or_else(default_scene);
+            let scene_path = cli
+                .scene
+                .map(|s| assets::scene_path(&s))
+                .unwrap_or_else(default_scene);
             let want_window = match cli.backend {
                 Some(Backend::Window) => true,
                 Some(_) => false,
@@ -197,6 +199,12 @@ fn run(cli: Cli) -> Result<()> {
         }) => {
             let s = load_scene(&scene, path, lights)?;
             print!("{}", gloss::techniques::plan(&s));
+            Ok(())
+        }
+        Some(Command::Scenes) => {
+            for s in assets::shipped_scenes() {
+                println!("{s}");
+            }
             Ok(())
         }
         Some(Command::Bench(args)) => gloss::bench::run(&args, headless_backend(cli.backend)?)

@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[(&str, u32)] = &[
     ("math", 0),
     ("image_compare", 0),
+    ("assets", 0),
     ("geometry", 1),
     ("gl", 2),
     ("scene", 3),

@@ -333,7 +333,8 @@ fn scene_unknown_render_path() {
         "scene_unknown_render_path",
         &text,
         &[
-            "render.path",
+            // The TOML error quotes the line: the key and its value.
+            "path = \"raytraced\"",
             "expected forward, deferred, volumes or prepass",
             "\"raytraced\"",
         ],

@@ -67,6 +67,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         .scene
         .clone()
         .unwrap_or_else(|| PathBuf::from("scenes/many-lights.toml"));
+    let scene_path = crate::assets::scene_path(&scene_path);
     let base = Scene::load(&scene_path)?;
     let ctx = Headless::new(backend, false)?;
     let software = ctx.info.renderer.contains("llvmpipe") || ctx.info.renderer.contains("softpipe");

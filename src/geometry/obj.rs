@@ -3,6 +3,7 @@
 
 use super::normals::{compute_normals, compute_tangents};
 use super::{MeshData, Vertex};
+use crate::assets;
 use anyhow::{Context, Result, anyhow, bail};
 use glam::Vec3;
 use std::io::Read;
@@ -29,23 +30,32 @@ pub fn load_obj(path: &Path) -> Result<MeshData> {
 
 fn load_obj_limited(path: &Path, max_bytes: u64, max_vertices: usize) -> Result<MeshData> {
     let name = path.display();
-    let meta = std::fs::metadata(path).with_context(|| format!("cannot open OBJ file {name}"))?;
-    if !meta.is_file() {
-        bail!("OBJ file {name} is not a regular file");
-    }
-    if meta.len() > max_bytes {
-        bail!(
-            "OBJ file {name} is too large: {} bytes, the limit is {max_bytes} bytes",
-            meta.len()
-        );
-    }
-    let mut bytes = Vec::with_capacity(meta.len() as usize);
-    std::fs::File::open(path)
-        .and_then(|f| f.take(max_bytes + 1).read_to_end(&mut bytes))
-        .with_context(|| format!("cannot read OBJ file {name}"))?;
-    if bytes.len() as u64 > max_bytes {
-        bail!("OBJ file {name} is too large: it grew past {max_bytes} bytes while being read");
-    }
+    let bytes: Vec<u8> = match assets::embedded(path) {
+        Some(f) => f.contents().to_vec(),
+        None => {
+            let meta =
+                std::fs::metadata(path).with_context(|| format!("cannot open OBJ file {name}"))?;
+            if !meta.is_file() {
+                bail!("OBJ file {name} is not a regular file");
+            }
+            if meta.len() > max_bytes {
+                bail!(
+                    "OBJ file {name} is too large: {} bytes, the limit is {max_bytes} bytes",
+                    meta.len()
+                );
+            }
+            let mut bytes = Vec::with_capacity(meta.len() as usize);
+            std::fs::File::open(path)
+                .and_then(|f| f.take(max_bytes + 1).read_to_end(&mut bytes))
+                .with_context(|| format!("cannot read OBJ file {name}"))?;
+            if bytes.len() as u64 > max_bytes {
+                bail!(
+                    "OBJ file {name} is too large: it grew past {max_bytes} bytes while being read"
+                );
+            }
+            bytes
+        }
+    };
     // Cheap count before tobj allocates anything per vertex.
     let positions = bytes
         .split(|&b| b == b'\n')

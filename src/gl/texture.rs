@@ -1,6 +1,7 @@
 //! 2D textures: loaded from PNG (sRGB or linear), or empty render targets.
 
 use super::Gl;
+use crate::assets;
 use anyhow::{Context as _, Result, anyhow, bail};
 use glow::{HasContext, PixelUnpackData};
 use std::path::Path;
@@ -149,11 +150,20 @@ impl Texture {
 /// Decode an image file to RGBA8 with v flipped for GL, refusing absurd sizes
 /// before decoding.
 pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
-    let reader = image::ImageReader::open(path)
-        .with_context(|| format!("cannot open texture {}", path.display()))?
-        .with_guessed_format()
-        .with_context(|| format!("cannot read texture {}", path.display()))?;
-    let (w, h) = reader
+    // A shipped scene's texture is embedded in the binary (src/assets.rs).
+    let open = || -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
+        let reader: Box<dyn BufReadSeek> = match assets::embedded(path) {
+            Some(f) => Box::new(std::io::Cursor::new(f.contents())),
+            None => Box::new(std::io::BufReader::new(
+                std::fs::File::open(path)
+                    .with_context(|| format!("cannot open texture {}", path.display()))?,
+            )),
+        };
+        image::ImageReader::new(reader)
+            .with_guessed_format()
+            .with_context(|| format!("cannot read texture {}", path.display()))
+    };
+    let (w, h) = open()?
         .into_dimensions()
         .with_context(|| format!("texture {} is not a readable image", path.display()))?;
     if w == 0 || h == 0 || w > MAX_TEXTURE_SIDE || h > MAX_TEXTURE_SIDE {
@@ -165,13 +175,17 @@ pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
     let mut limits = image::Limits::default();
     limits.max_image_width = Some(MAX_TEXTURE_SIDE);
     limits.max_image_height = Some(MAX_TEXTURE_SIDE);
-    let mut reader = image::ImageReader::open(path)?.with_guessed_format()?;
+    let mut reader = open()?;
     reader.limits(limits);
     let img = reader
         .decode()
         .with_context(|| format!("texture {} is malformed", path.display()))?;
     Ok(image::imageops::flip_vertical(&img.to_rgba8()))
 }
+
+/// What `image` reads from: a file or embedded bytes.
+trait BufReadSeek: std::io::BufRead + std::io::Seek {}
+impl<T: std::io::BufRead + std::io::Seek> BufReadSeek for T {}
 
 /// glTexParameteri for wrap and filters on the bound GL_TEXTURE_2D.
 pub fn set_sampling(gl: &glow::Context, s: Sampling) {

@@ -21,6 +21,8 @@
 //! adds positive numbers; [`notes_radius`] keeps the notes' version for the
 //! comparison table in docs.
 
+use crate::scene::validate_attenuation;
+
 /// The notes' default light-volume cutoff: 5/256 of the light's brightest
 /// channel.
 pub const NOTES_CUTOFF: f32 = 5.0 / 256.0;
@@ -34,39 +36,10 @@ pub const NOTES_KQ: f32 = 0.032;
 /// The attenuation factor `1 / (Kc + Kl d + Kq d^2)` at distance `d`.
 ///
 /// Multiply by the light's intensity to get the notes' `F_light`. Inputs are
-/// not checked (see [`validate_attenuation`]); a zero denominator gives
+/// not checked (the scene loader checks them with [`validate_attenuation`]); a zero denominator gives
 /// `+inf`, as IEEE division does.
 pub fn attenuation(kc: f32, kl: f32, kq: f32, d: f32) -> f32 {
     1.0 / (kc + kl * d + kq * d * d)
-}
-
-/// Checks attenuation coefficients as the scene loader must before any light
-/// uses them: every coefficient finite and non-negative, and not all zero
-/// (which would make the attenuation infinite everywhere).
-pub fn validate_attenuation(kc: f32, kl: f32, kq: f32) -> Result<(), String> {
-    for (name, v) in [
-        ("Kc (constant)", kc),
-        ("Kl (linear)", kl),
-        ("Kq (quadratic)", kq),
-    ] {
-        if !v.is_finite() {
-            return Err(format!(
-                "attenuation coefficient {name} must be a finite number, got {v}"
-            ));
-        }
-        if v < 0.0 {
-            return Err(format!(
-                "attenuation coefficient {name} must be >= 0, got {v}"
-            ));
-        }
-    }
-    if kc == 0.0 && kl == 0.0 && kq == 0.0 {
-        return Err(
-            "attenuation coefficients Kc, Kl and Kq are all 0: the light would be infinitely bright"
-                .to_string(),
-        );
-    }
-    Ok(())
 }
 
 /// Radius of a point light's volume: the distance `d >= 0` at which

@@ -2,6 +2,7 @@
 //! serde's defaults for every key that may be left out. `resolve` checks these
 //! values and turns them into a `Scene`.
 
+use super::settings::{Accumulation, DepthFunc, RenderPath, Shading};
 use serde::Deserialize;
 use std::collections::HashMap;
 
@@ -59,29 +60,29 @@ fn default_far() -> f32 {
 #[derive(Deserialize, Debug)]
 #[serde(deny_unknown_fields, default)]
 pub(super) struct RenderFile {
-    pub(super) path: String,
-    pub(super) shading: String,
+    pub(super) path: RenderPath,
+    pub(super) shading: Shading,
     pub(super) size: [u32; 2],
     pub(super) background: [f32; 3],
     pub(super) ambient: [f32; 3],
-    pub(super) depth_func: String,
+    pub(super) depth_func: DepthFunc,
     pub(super) cutoff: f32,
     pub(super) stencil_volumes: bool,
-    pub(super) accumulation: String,
+    pub(super) accumulation: Accumulation,
 }
 
 impl Default for RenderFile {
     fn default() -> Self {
         RenderFile {
-            path: "forward".into(),
-            shading: "phong".into(),
+            path: RenderPath::Forward,
+            shading: Shading::Phong,
             size: [1280, 720],
             background: [0.0, 0.0, 0.0],
             ambient: [0.03, 0.03, 0.03],
-            depth_func: "less".into(),
+            depth_func: DepthFunc::Less,
             cutoff: 5.0 / 256.0,
             stencil_volumes: false,
-            accumulation: "rgba16f".into(),
+            accumulation: Accumulation::Rgba16f,
         }
     }
 }

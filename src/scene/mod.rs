@@ -12,8 +12,12 @@
 mod file;
 mod light_grid;
 mod resolve;
+mod settings;
 
-use crate::attenuation;
+pub use resolve::validate_attenuation;
+pub use settings::{Accumulation, DepthFunc, RenderPath, Shading};
+
+use crate::assets;
 use crate::math;
 use anyhow::{Context as _, Result, anyhow};
 use file::SceneFile;
@@ -55,61 +59,6 @@ impl Camera {
     }
 }
 
-/// Which renderer runs the frame (issue 3 adds the deferred ones).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum)]
-pub enum RenderPath {
-    /// Every light for every fragment in one pass (notes 04 "forward rendering"): the reference.
-    Forward,
-    /// G-buffer, then one full-screen pass per light ("our current deferred shader").
-    Deferred,
-    /// G-buffer, then a volume per light (sphere, cone, full-screen quad), then composite.
-    Volumes,
-    /// Deferred lighting / light pre-pass (notes 02): diffuse and specular accumulated apart.
-    Prepass,
-}
-
-impl RenderPath {
-    pub fn parse(s: &str) -> Option<RenderPath> {
-        Some(match s {
-            "forward" => RenderPath::Forward,
-            "deferred" => RenderPath::Deferred,
-            "volumes" => RenderPath::Volumes,
-            "prepass" => RenderPath::Prepass,
-            _ => return None,
-        })
-    }
-    pub fn name(self) -> &'static str {
-        match self {
-            RenderPath::Forward => "forward",
-            RenderPath::Deferred => "deferred",
-            RenderPath::Volumes => "volumes",
-            RenderPath::Prepass => "prepass",
-        }
-    }
-}
-
-/// Notes 01 §8.2 shading modes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Shading {
-    /// One colour per triangle (lit at its centroid with its face normal).
-    Flat,
-    /// Lighting per vertex, interpolated.
-    Gouraud,
-    /// Lighting per fragment.
-    Phong,
-}
-
-impl Shading {
-    pub fn parse(s: &str) -> Option<Shading> {
-        Some(match s {
-            "flat" => Shading::Flat,
-            "gouraud" => Shading::Gouraud,
-            "phong" => Shading::Phong,
-            _ => return None,
-        })
-    }
-}
-
 #[derive(Clone, Debug)]
 pub struct RenderSettings {
     pub path: RenderPath,
@@ -118,13 +67,13 @@ pub struct RenderSettings {
     pub background: Vec3,
     pub ambient: Vec3,
     /// GL_LESS (notes 02: "fails when d >= D") or GL_LEQUAL (notes 01: "passes when z <= D").
-    pub depth_func: u32,
+    pub depth_func: DepthFunc,
     /// Light-volume cutoff, a fraction of the light's brightest channel (notes 04: 5/256).
     pub cutoff: f32,
     /// Light volumes: use the two-sided stencil test to mark lit pixels first.
     pub stencil_volumes: bool,
     /// Internal format of the light accumulation target (RGBA16F or RGBA32F).
-    pub accumulation: u32,
+    pub accumulation: Accumulation,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -158,14 +107,6 @@ impl Light {
     /// The brightest channel, I_max in notes 04.
     pub fn i_max(&self) -> f32 {
         self.radiance().max_element()
-    }
-    /// Light-volume radius at `cutoff` (None: no finite volume, e.g. Kl = Kq = 0,
-    /// or a directional light).
-    pub fn volume_radius(&self, cutoff: f32) -> Option<f32> {
-        match self.kind {
-            LightKind::Directional => None,
-            _ => attenuation::light_volume_radius(self.kc, self.kl, self.kq, self.i_max(), cutoff),
-        }
     }
 }
 
@@ -215,12 +156,25 @@ pub struct Scene {
     pub objects: Vec<Object>,
 }
 
+/// The largest scene file gloss reads (scene files are small; this stops a
+/// wrong path such as /dev/zero from filling the memory).
+pub const MAX_SCENE_BYTES: u64 = 4 << 20;
+
+fn read_text(path: &Path) -> Result<String> {
+    let bytes = assets::read(path, MAX_SCENE_BYTES, "scene file")?;
+    String::from_utf8(bytes.into_owned()).with_context(|| {
+        format!(
+            "cannot read scene file {}: it is not UTF-8 text",
+            path.display()
+        )
+    })
+}
+
 impl Scene {
-    /// Read, check and resolve a scene file.
+    /// Read, check and resolve a scene file (on disk, or a shipped one:
+    /// src/assets.rs).
     pub fn load(path: &Path) -> Result<Scene> {
-        let text = std::fs::read_to_string(path)
-            .with_context(|| format!("cannot read scene file {}", path.display()))?;
-        Scene::parse(&text, path)
+        Scene::parse(&read_text(path)?, path)
     }
 
     /// Parse scene text; `path` names the file in messages and anchors relative paths.
@@ -233,7 +187,7 @@ impl Scene {
     /// Replace the generated lights with `count` of them (`gloss bench --lights`).
     /// Scenes without a `[light_grid]` keep their lights.
     pub fn set_light_count(&mut self, count: usize) -> Result<()> {
-        let text = std::fs::read_to_string(&self.path)?;
+        let text = read_text(&self.path)?;
         let file: SceneFile = toml::from_str(&text)?;
         let mut grid = file.light_grid.ok_or_else(|| {
             anyhow!(

@@ -6,10 +6,9 @@
 use super::file::SceneFile;
 use super::light_grid::generate_lights;
 use super::{
-    Camera, Light, LightKind, Material, MeshSource, Object, Projection, RenderPath, RenderSettings,
-    Scene, Shading,
+    Camera, Light, LightKind, Material, MeshSource, Object, Projection, RenderSettings, Scene,
 };
-use crate::attenuation;
+use crate::assets;
 use crate::math;
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
@@ -124,18 +123,8 @@ fn camera(f: &SceneFile) -> Result<Camera> {
 fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
     let r = &f.render;
     Ok(RenderSettings {
-        path: RenderPath::parse(&r.path).ok_or_else(|| {
-            anyhow!(
-                "render.path: expected forward, deferred, volumes or prepass, found \"{}\"",
-                r.path
-            )
-        })?,
-        shading: Shading::parse(&r.shading).ok_or_else(|| {
-            anyhow!(
-                "render.shading: expected flat, gouraud or phong, found \"{}\"",
-                r.shading
-            )
-        })?,
+        path: r.path,
+        shading: r.shading,
         size: {
             let [w, h] = r.size;
             if !(1..=8192).contains(&w) || !(1..=8192).contains(&h) {
@@ -151,11 +140,7 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             non_negative("render.ambient", &r.ambient)?;
             Vec3::from(r.ambient)
         },
-        depth_func: match r.depth_func.as_str() {
-            "less" => glow::LESS,
-            "lequal" => glow::LEQUAL,
-            other => bail!("render.depth_func: expected \"less\" or \"lequal\", found \"{other}\""),
-        },
+        depth_func: r.depth_func,
         cutoff: {
             if !(r.cutoff.is_finite() && r.cutoff > 0.0 && r.cutoff < 1.0) {
                 bail!(
@@ -166,13 +151,7 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             r.cutoff
         },
         stencil_volumes: r.stencil_volumes,
-        accumulation: match r.accumulation.as_str() {
-            "rgba16f" => glow::RGBA16F,
-            "rgba32f" => glow::RGBA32F,
-            other => {
-                bail!("render.accumulation: expected \"rgba16f\" or \"rgba32f\", found \"{other}\"")
-            }
-        },
+        accumulation: r.accumulation,
     })
 }
 
@@ -184,8 +163,7 @@ fn lights(f: &SceneFile) -> Result<Vec<Light>> {
         non_negative(&key("color"), &l.color)?;
         non_negative(&key("intensity"), &[l.intensity])?;
         let [kc, kl, kq] = l.attenuation;
-        attenuation::validate_attenuation(kc, kl, kq)
-            .map_err(|e| anyhow!("{}: {e}", key("attenuation")))?;
+        validate_attenuation(kc, kl, kq).map_err(|e| anyhow!("{}: {e}", key("attenuation")))?;
         let kind = match l.kind.as_str() {
             "directional" => LightKind::Directional,
             "point" => LightKind::Point,
@@ -244,8 +222,7 @@ fn lights(f: &SceneFile) -> Result<Vec<Light>> {
         finite("light_grid.height", &g.height)?;
         non_negative("light_grid.intensity", &[g.intensity])?;
         let [kc, kl, kq] = g.attenuation;
-        attenuation::validate_attenuation(kc, kl, kq)
-            .map_err(|e| anyhow!("light_grid.attenuation: {e}"))?;
+        validate_attenuation(kc, kl, kq).map_err(|e| anyhow!("light_grid.attenuation: {e}"))?;
         if g.count > 100_000 {
             bail!("light_grid.count: at most 100000 lights, found {}", g.count);
         }
@@ -282,7 +259,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         let diffuse_texture = match &m.diffuse_texture {
             Some(t) => {
                 let p = base.join(t);
-                if !p.is_file() {
+                if !assets::is_file(&p) {
                     bail!(
                         "{}: file {} does not exist",
                         key("diffuse_texture"),
@@ -328,7 +305,7 @@ fn objects(
             "torus" => MeshSource::Torus,
             file if file.ends_with(".obj") => {
                 let p = base.join(file);
-                if !p.is_file() {
+                if !assets::is_file(&p) {
                     bail!("{}: file {} does not exist", key("mesh"), p.display());
                 }
                 MeshSource::Obj(p)
@@ -387,4 +364,33 @@ fn objects(
         });
     }
     Ok(objects)
+}
+
+/// Checks attenuation coefficients as the scene loader must before any light
+/// uses them: every coefficient finite and non-negative, and not all zero
+/// (which would make the attenuation infinite everywhere).
+pub fn validate_attenuation(kc: f32, kl: f32, kq: f32) -> Result<(), String> {
+    for (name, v) in [
+        ("Kc (constant)", kc),
+        ("Kl (linear)", kl),
+        ("Kq (quadratic)", kq),
+    ] {
+        if !v.is_finite() {
+            return Err(format!(
+                "attenuation coefficient {name} must be a finite number, got {v}"
+            ));
+        }
+        if v < 0.0 {
+            return Err(format!(
+                "attenuation coefficient {name} must be >= 0, got {v}"
+            ));
+        }
+    }
+    if kc == 0.0 && kl == 0.0 && kq == 0.0 {
+        return Err(
+            "attenuation coefficients Kc, Kl and Kq are all 0: the light would be infinitely bright"
+                .to_string(),
+        );
+    }
+    Ok(())
 }

@@ -15,8 +15,6 @@
 //! GL state: step 2 as light_volumes.rs; step 3 sets GL_LEQUAL, depth writes
 //! off, back-face culling, glFrontFace per object, and restores them.
 
-#[allow(unused_imports)]
-use crate::GlEnumShim;
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;

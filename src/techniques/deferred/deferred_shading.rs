@@ -17,8 +17,6 @@
 //! GL state: no depth test, depth writes off, additive blending; restores
 //! depth writes and no blending.
 
-#[allow(unused_imports)]
-use crate::GlEnumShim;
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;

@@ -9,8 +9,6 @@
 //! culling, glFrontFace per object, GL_FRAMEBUFFER_SRGB (albedo and specular
 //! are encoded as they are stored); restores all of them.
 
-#[allow(unused_imports)]
-use crate::GlEnumShim;
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;

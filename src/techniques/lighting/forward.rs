@@ -15,8 +15,6 @@
 //! culling, glFrontFace per object; restores GL_LESS, no depth test, no
 //! culling, GL_CCW.
 
-#[allow(unused_imports)]
-use crate::GlEnumShim;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::targets::{OUTPUT, TargetDesc};

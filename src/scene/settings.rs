@@ -1,0 +1,122 @@
+//! The `[render]` settings that are one word out of a few: written in scene
+//! files, given on the command line (`--path volumes`) and, later, picked in
+//! the demo. Each is declared once below; the macro derives the parsing,
+//! the printing and the list of choices from that one declaration.
+
+/// Declare a setting: an enum whose variants are spelt as the given words
+/// in scene files and on the command line.
+macro_rules! setting {
+    (
+        $(#[$meta:meta])*
+        pub enum $name:ident {
+            $( $(#[$vmeta:meta])* $variant:ident = $word:literal, )+
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum, serde::Serialize)]
+        pub enum $name {
+            $( $(#[$vmeta])* #[value(name = $word)] #[serde(rename = $word)] $variant, )+
+        }
+
+        impl $name {
+            /// Every choice, in declaration order.
+            pub const ALL: &'static [$name] = &[$($name::$variant),+];
+
+            /// The word a scene file uses.
+            pub fn name(self) -> &'static str {
+                match self {
+                    $($name::$variant => $word,)+
+                }
+            }
+        }
+
+        impl std::fmt::Display for $name {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+
+        impl<'de> serde::Deserialize<'de> for $name {
+            fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                let word = String::deserialize(d)?;
+                $name::ALL
+                    .iter()
+                    .copied()
+                    .find(|v| v.name() == word)
+                    .ok_or_else(|| {
+                        let words: Vec<&str> = $name::ALL.iter().map(|v| v.name()).collect();
+                        let (last, rest) = words.split_last().expect("a setting has choices");
+                        serde::de::Error::custom(format!(
+                            "expected {} or {last}, found \"{word}\"",
+                            rest.join(", ")
+                        ))
+                    })
+            }
+        }
+    };
+}
+
+setting! {
+    /// Which renderer runs the frame.
+    pub enum RenderPath {
+        /// Every light for every fragment in one pass (notes 04 "forward rendering"): the reference.
+        Forward = "forward",
+        /// G-buffer, then one full-screen pass per light ("our current deferred shader").
+        Deferred = "deferred",
+        /// G-buffer, then a volume per light (sphere, cone, full-screen triangle), then composite.
+        Volumes = "volumes",
+        /// Deferred lighting / light pre-pass (notes 02): diffuse and specular accumulated apart.
+        Prepass = "prepass",
+    }
+}
+
+setting! {
+    /// Notes 01 §8.2 shading modes.
+    pub enum Shading {
+        /// One colour per triangle (lit at its centroid with its face normal).
+        Flat = "flat",
+        /// Lighting per vertex, interpolated.
+        Gouraud = "gouraud",
+        /// Lighting per fragment.
+        Phong = "phong",
+    }
+}
+
+setting! {
+    /// The depth test: notes 02 says a fragment fails when d >= D (GL_LESS),
+    /// notes 01 that it passes when z <= D (GL_LEQUAL). Both are offered.
+    pub enum DepthFunc {
+        Less = "less",
+        Lequal = "lequal",
+    }
+}
+
+impl DepthFunc {
+    /// The glDepthFunc argument.
+    pub fn gl(self) -> u32 {
+        match self {
+            DepthFunc::Less => glow::LESS,
+            DepthFunc::Lequal => glow::LEQUAL,
+        }
+    }
+}
+
+setting! {
+    /// The internal format of the light accumulation target.
+    pub enum Accumulation {
+        /// Half floats: enough for tens of lights per pixel.
+        Rgba16f = "rgba16f",
+        /// Full floats: no rounding when hundreds of lights add up.
+        Rgba32f = "rgba32f",
+    }
+}
+
+impl Accumulation {
+    /// The texture's internal format.
+    pub fn gl(self) -> u32 {
+        match self {
+            Accumulation::Rgba16f => glow::RGBA16F,
+            Accumulation::Rgba32f => glow::RGBA32F,
+        }
+    }
+}

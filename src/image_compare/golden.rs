@@ -80,7 +80,7 @@ fn check_golden_impl(
         bail!(
             "golden image for {name} is missing: {}\n\
              create it by running the test with {UPDATE_GOLDEN_ENV}=1, e.g.\n  \
-             {UPDATE_GOLDEN_ENV}=1 cargo test --release --lib {name}\n\
+             {UPDATE_GOLDEN_ENV}=1 cargo test --release --test golden\n\
              and check the new image before committing it",
             golden_path.display()
         );

@@ -4,7 +4,7 @@
 //! and look at RGB only; alpha is ignored.
 //!
 //! Golden images live as PNGs; regenerate them with
-//! `GLOSS_UPDATE_GOLDEN=1 cargo test --release --lib <filter>` and review the
+//! `GLOSS_UPDATE_GOLDEN=1 cargo test --release --test golden` and review the
 //! changed files before committing them.
 
 mod golden;

@@ -87,6 +87,8 @@ fn every_pass_restores_the_gl_state_it_changed() {
     let ctx = common::context(common::backend());
     let gl = &ctx.gl;
     let base = common::scene("mixed-lights.toml");
+    // The state of a fresh context: every pass must leave it so.
+    let fresh = snapshot(gl);
     for (path, stencil) in [
         (RenderPath::Forward, false),
         (RenderPath::Deferred, false),
@@ -98,7 +100,7 @@ fn every_pass_restores_the_gl_state_it_changed() {
         scene.render.path = path;
         scene.render.stencil_volumes = stencil;
         let mut r = Renderer::new(gl, &ctx.debug, &scene, &Sources::Embedded, 96, 54).unwrap();
-        let before = snapshot(gl);
+        let before = &fresh;
         let mut changed = Vec::new();
         r.render_inspected(&scene.camera, &mut |pass| {
             let after = snapshot(gl);

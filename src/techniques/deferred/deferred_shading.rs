@@ -113,6 +113,7 @@ impl RunPasses for DeferredShading {
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
             gbuffer::unbind(gl);
             gl.use_program(None);
+            gl.blend_func(glow::ONE, glow::ZERO);
             gl.disable(glow::BLEND);
             gl.depth_mask(true);
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);

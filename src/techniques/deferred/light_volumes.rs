@@ -208,6 +208,7 @@ pub fn draw_bounded_volumes(f: &Frame, p: &Program) {
         gl.disable(glow::DEPTH_CLAMP);
         gl.depth_func(glow::LESS);
         gl.disable(glow::DEPTH_TEST);
+        gl.blend_func(glow::ONE, glow::ZERO);
         gl.disable(glow::BLEND);
         gl.depth_mask(true);
         gl.cull_face(glow::BACK);
@@ -231,5 +232,8 @@ pub fn draw_full_screen_lights(f: &Frame, p: &Program) {
             f.meshes.fullscreen.draw();
         }
     }
-    unsafe { gl.disable(glow::BLEND) };
+    unsafe {
+        gl.blend_func(glow::ONE, glow::ZERO);
+        gl.disable(glow::BLEND);
+    }
 }

@@ -160,6 +160,7 @@ fn draw_stencilled_volumes(f: &Frame, p: &Program) {
         gl.disable(glow::DEPTH_CLAMP);
         gl.depth_func(glow::LESS);
         gl.disable(glow::DEPTH_TEST);
+        gl.blend_func(glow::ONE, glow::ZERO);
         gl.disable(glow::BLEND);
         gl.depth_mask(true);
         gl.cull_face(glow::BACK);

@@ -1,0 +1,302 @@
+//! Scene files: missing, TOML syntax, unknown keys, wrong types, NaN/inf,
+//! bad attenuation, unknown names, bad references, camera eye == target.
+
+use crate::{BASE, base_with, cli_fails, contains_all, os, render_fails, temp_dir, write};
+use gloss::scene::Scene;
+use std::path::Path;
+
+/// Write `text` as `scene.toml` in a fresh directory, check that both
+/// `Scene::load` and `gloss plan` refuse it with a message holding `words`
+/// (and the file name); return the library's message.
+fn scene_fails(test: &str, text: &str, words: &[&str]) -> String {
+    let dir = temp_dir(test);
+    scene_in_dir_fails(&dir, text, words)
+}
+
+fn scene_in_dir_fails(dir: &Path, text: &str, words: &[&str]) -> String {
+    let path = write(dir, "scene.toml", text);
+    let msg = match Scene::load(&path) {
+        Ok(_) => panic!(
+            "{test}: the scene should be refused:\n{text}",
+            test = dir.display()
+        ),
+        Err(e) => format!("{e:#}"),
+    };
+    contains_all(&msg, &["scene.toml"]);
+    contains_all(&msg, words);
+    let stderr = cli_fails(&[os("plan"), path.as_os_str()]);
+    contains_all(&stderr, &["scene.toml"]);
+    contains_all(&stderr, words);
+    msg
+}
+
+#[test]
+fn base_scene_is_valid() {
+    let dir = temp_dir("base_scene_is_valid");
+    let path = write(&dir, "scene.toml", BASE);
+    Scene::load(&path).expect("BASE loads");
+}
+
+#[test]
+fn scene_file_missing() {
+    let dir = temp_dir("scene_file_missing");
+    let path = dir.join("no-such-scene.toml");
+    let msg = format!("{:#}", Scene::load(&path).unwrap_err());
+    contains_all(&msg, &["cannot read scene file", "no-such-scene.toml"]);
+    let out = dir.join("out.png");
+    let stderr = render_fails(&path, &out);
+    contains_all(&stderr, &["cannot read scene file", "no-such-scene.toml"]);
+    assert!(!out.exists(), "no output written for a missing scene");
+}
+
+#[test]
+fn scene_toml_syntax_error_names_the_line() {
+    let text = base_with("near = 1.0", "near = 1.0.0");
+    // "near = 1.0" is line 9 of BASE.
+    scene_fails(
+        "scene_toml_syntax_error_names_the_line",
+        &text,
+        &["TOML parse error", "line 9", "near = 1.0.0"],
+    );
+}
+
+#[test]
+fn scene_unknown_top_level_key() {
+    let text = format!("colour = \"red\"\n{BASE}");
+    scene_fails(
+        "scene_unknown_top_level_key",
+        &text,
+        &[
+            "unknown field `colour`",
+            "line 1",
+            "expected one of",
+            "camera",
+        ],
+    );
+}
+
+#[test]
+fn scene_unknown_key_in_light() {
+    let text = base_with("intensity = 1.5", "intensity = 1.5\nradius = 3.0");
+    scene_fails(
+        "scene_unknown_key_in_light",
+        &text,
+        &[
+            "unknown field `radius`",
+            "line 22",
+            "intensity",
+            "attenuation",
+        ],
+    );
+}
+
+#[test]
+fn scene_unknown_key_in_camera() {
+    let text = base_with("half_height = 5.0", "half_height = 5.0\nzoom = 2.0");
+    scene_fails(
+        "scene_unknown_key_in_camera",
+        &text,
+        &["unknown field `zoom`", "line 9", "half_height", "fov_y"],
+    );
+}
+
+#[test]
+fn scene_wrong_type() {
+    let text = base_with("intensity = 1.5", "intensity = \"bright\"");
+    scene_fails(
+        "scene_wrong_type",
+        &text,
+        &[
+            "line 21",
+            "intensity = \"bright\"",
+            "invalid type: string \"bright\"",
+            "expected f32",
+        ],
+    );
+}
+
+#[test]
+fn scene_nan_color() {
+    let text = base_with("color = [1.0, 0.9, 0.8]", "color = [nan, 1, 1]");
+    scene_fails(
+        "scene_nan_color",
+        &text,
+        &["lights[0].color", "expected finite numbers", "NaN"],
+    );
+}
+
+#[test]
+fn scene_inf_values() {
+    let dir = temp_dir("scene_inf_values");
+    let text = base_with("intensity = 1.5", "intensity = inf");
+    scene_in_dir_fails(
+        &dir,
+        &text,
+        &["lights[0].intensity", "expected finite numbers", "inf"],
+    );
+    let text = base_with("eye = [0.0, 10.0, 0.0]", "eye = [0.0, -inf, 0.0]");
+    scene_in_dir_fails(
+        &dir,
+        &text,
+        &["camera.eye", "expected finite numbers", "-inf"],
+    );
+    let text = base_with(
+        "attenuation = [1.0, 0.09, 0.032]",
+        "attenuation = [1.0, nan, 0.032]",
+    );
+    scene_in_dir_fails(
+        &dir,
+        &text,
+        &["lights[0].attenuation", "Kl (linear)", "finite", "NaN"],
+    );
+}
+
+#[test]
+fn scene_negative_attenuation() {
+    let text = base_with(
+        "attenuation = [1.0, 0.09, 0.032]",
+        "attenuation = [1.0, -0.09, 0.032]",
+    );
+    scene_fails(
+        "scene_negative_attenuation",
+        &text,
+        &[
+            "lights[0].attenuation",
+            "Kl (linear)",
+            "must be >= 0",
+            "-0.09",
+        ],
+    );
+}
+
+#[test]
+fn scene_all_zero_attenuation() {
+    let text = base_with(
+        "attenuation = [1.0, 0.09, 0.032]",
+        "attenuation = [0.0, 0.0, 0.0]",
+    );
+    scene_fails(
+        "scene_all_zero_attenuation",
+        &text,
+        &["lights[0].attenuation", "all 0", "infinitely bright"],
+    );
+}
+
+#[test]
+fn scene_unknown_light_type() {
+    let text = base_with("type = \"point\"", "type = \"area\"");
+    scene_fails(
+        "scene_unknown_light_type",
+        &text,
+        &[
+            "lights[0].type",
+            "expected directional, point or spot",
+            "\"area\"",
+        ],
+    );
+}
+
+#[test]
+fn scene_unknown_render_path() {
+    let text = base_with("size = [32, 24]", "size = [32, 24]\npath = \"raytraced\"");
+    scene_fails(
+        "scene_unknown_render_path",
+        &text,
+        &[
+            // The TOML error quotes the line: the key and its value.
+            "path = \"raytraced\"",
+            "expected forward, deferred, volumes or prepass",
+            "\"raytraced\"",
+        ],
+    );
+}
+
+#[test]
+fn scene_spot_inner_wider_than_outer() {
+    let text = base_with(
+        "type = \"point\"",
+        "type = \"spot\"\ndirection = [0.0, -1.0, 0.0]\ninner_angle = 40.0\nouter_angle = 30.0",
+    );
+    scene_fails(
+        "scene_spot_inner_wider_than_outer",
+        &text,
+        &[
+            "lights[0].inner_angle/outer_angle",
+            "inner_angle <= outer_angle",
+            "40",
+            "30",
+        ],
+    );
+}
+
+#[test]
+fn scene_camera_eye_equals_target() {
+    let text = base_with("target = [0.0, 0.0, 0.0]", "target = [0.0, 10.0, 0.0]");
+    scene_fails(
+        "scene_camera_eye_equals_target",
+        &text,
+        &["camera", "eye and target are the same point"],
+    );
+}
+
+#[test]
+fn scene_missing_mesh_file() {
+    let text = base_with("mesh = \"plane\"", "mesh = \"models/missing.obj\"");
+    scene_fails(
+        "scene_missing_mesh_file",
+        &text,
+        &["objects[0].mesh", "missing.obj", "does not exist"],
+    );
+}
+
+#[test]
+fn scene_missing_texture_file() {
+    let text = base_with(
+        "shininess = 24.0",
+        "shininess = 24.0\ndiffuse_texture = \"textures/missing.png\"",
+    );
+    scene_fails(
+        "scene_missing_texture_file",
+        &text,
+        &[
+            "materials.floor.diffuse_texture",
+            "missing.png",
+            "does not exist",
+        ],
+    );
+}
+
+#[test]
+fn scene_unknown_material() {
+    let text = base_with("material = \"floor\"", "material = \"marble\"");
+    scene_fails(
+        "scene_unknown_material",
+        &text,
+        &["objects[0].material", "no material named \"marble\""],
+    );
+}
+
+#[test]
+fn scene_parent_cycle() {
+    let text = format!(
+        "{}\n[[objects]]\nname = \"b\"\nmesh = \"cube\"\nparent = \"floor\"\n",
+        base_with(
+            "material = \"floor\"",
+            "material = \"floor\"\nparent = \"b\""
+        )
+    );
+    scene_fails("scene_parent_cycle", &text, &["objects[0].parent", "cycle"]);
+}
+
+#[test]
+fn scene_unknown_parent() {
+    let text = base_with(
+        "material = \"floor\"",
+        "material = \"floor\"\nparent = \"table\"",
+    );
+    scene_fails(
+        "scene_unknown_parent",
+        &text,
+        &["objects[0].parent", "no object named \"table\""],
+    );
+}

@@ -91,3 +91,46 @@ fn no_arguments_without_a_display_renders_the_default_scene() {
     let img = image::open(&png).unwrap();
     assert_eq!((img.width(), img.height()), (1280, 720));
 }
+
+#[test]
+fn shipped_scenes_run_from_any_directory() {
+    // The binary carries the scenes and their meshes and textures: from an
+    // empty directory, `gloss scenes` lists them all and any of them renders
+    // by name, read from the embedded copy.
+    let dir = std::env::temp_dir().join("gloss-any-directory");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let gloss = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+            .args(args)
+            .current_dir(&dir)
+            .env_remove("DISPLAY")
+            .env_remove("WAYLAND_DISPLAY")
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "gloss {args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let listed = gloss(&["scenes"]);
+    let mut shipped: Vec<String> = std::fs::read_dir(common::root().join("scenes"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".toml"))
+        .map(|n| format!("scenes/{n}"))
+        .collect();
+    shipped.sort();
+    assert_eq!(listed.lines().collect::<Vec<_>>(), shipped);
+    // default.toml uses an OBJ mesh and a PNG texture from scenes/assets/.
+    let out = gloss(&["render", "default", "-o", "default.png", "--size", "64x36"]);
+    assert!(out.contains("wrote default.png"), "{out}");
+    let img = image::open(dir.join("default.png")).unwrap();
+    assert_eq!((img.width(), img.height()), (64, 36));
+    let plan = gloss(&["plan", "scenes/many-lights.toml"]);
+    assert!(plan.contains("256 spheres"), "{plan}");
+    let out = gloss(&[]);
+    assert!(out.contains("embedded:scenes/default.toml"), "{out}");
+}

@@ -23,7 +23,7 @@ use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::program::Program;
 use crate::scene::{RenderPath, Scene};
-use crate::techniques::deferred::light_volumes::volume_pass;
+use crate::techniques::deferred::light_volumes::{draw_bounded_volumes, volume_pass};
 use anyhow::Result;
 use glow::HasContext;
 
@@ -115,7 +115,7 @@ impl DeferredLighting {
     /// Step 2: diffuse and specular light, per light volume, additive: the
     /// light-volume pass with this technique's shader.
     fn light_prepass(&self, f: &Frame) {
-        volume_pass(f, &self.light);
+        volume_pass(f, &self.light, draw_bounded_volumes);
     }
 
     /// Step 3: draw the scene again, combining light and material.

@@ -108,24 +108,32 @@ struct LightVolumes {
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    Ok(Box::new(LightVolumes {
+        program: volume_program(p)?,
+    }))
+}
+
+/// The light-volume shading program (also the stencil variant's).
+pub fn volume_program(p: &Programs) -> Result<Program> {
     let program = p.build(&[
         (glow::VERTEX_SHADER, "deferred/light_volumes.vert"),
         (glow::FRAGMENT_SHADER, "deferred/light_volumes.frag"),
     ])?;
     program.bind_uniform_block("Lights", LIGHTS_BINDING);
-    Ok(Box::new(LightVolumes { program }))
+    Ok(program)
 }
 
 impl RunPasses for LightVolumes {
     fn run(&self, _: &Pass, f: &Frame) {
-        volume_pass(f, &self.program);
+        volume_pass(f, &self.program, draw_bounded_volumes);
     }
 }
 
-/// The lighting pass with program `p`: every light's volume, additive, into
-/// the light accumulation target; then the lights that have no volume. The
-/// light pre-pass (deferred_lighting.rs) runs it with its own shader.
-pub fn volume_pass(f: &Frame, p: &Program) {
+/// The lighting pass with program `p`: the bounded lights' volumes drawn by
+/// `draw_volumes`, additive, into the light accumulation target; then the
+/// lights that have no volume. The stencil variant passes its own
+/// `draw_volumes`; the light pre-pass (deferred_lighting.rs) its own shader.
+pub fn volume_pass(f: &Frame, p: &Program, draw_volumes: fn(&Frame, &Program)) {
     let gl = f.gl;
     let gbuf = f.targets.get(gbuffer::NAME);
     let target = f.targets.get(LIGHT_ACCUMULATION);
@@ -144,7 +152,7 @@ pub fn volume_pass(f: &Frame, p: &Program) {
             Some(f.uniforms.lights_ubo),
         );
     }
-    draw_bounded_volumes(f, p);
+    draw_volumes(f, p);
     draw_full_screen_lights(f, p);
     unsafe {
         gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
@@ -154,9 +162,9 @@ pub fn volume_pass(f: &Frame, p: &Program) {
     }
 }
 
-/// Copy the G-buffer's depth (and stencil) into `target`'s own
-/// depth-stencil: the volumes are tested against the copy while the shader
-/// reads the original.
+/// Copy the G-buffer's depth (and stencil, cleared to 0 by the G-buffer
+/// pass) into `target`'s own depth-stencil: the volumes are tested against
+/// the copy while the shader reads the original.
 pub fn copy_depth(gl: &glow::Context, gbuf: &Framebuffer, target: &Framebuffer) {
     let (w, h) = (gbuf.width, gbuf.height);
     unsafe {

@@ -26,14 +26,11 @@ use crate::frame::gbuffer;
 use crate::frame::lights::{FrameLights, Volume};
 use crate::frame::plan::Pass;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
-use crate::frame::uniforms::LIGHTS_BINDING;
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::program::Program;
 use crate::scene::{RenderPath, Scene};
 use crate::techniques::deferred::deferred_shading::accumulation_target;
-use crate::techniques::deferred::light_volumes::{
-    copy_depth, describe_volumes, draw_full_screen_lights,
-};
+use crate::techniques::deferred::light_volumes::{describe_volumes, volume_pass, volume_program};
 use anyhow::Result;
 use glow::HasContext;
 
@@ -76,42 +73,16 @@ struct StencilLightVolumes {
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let program = p.build(&[
-        (glow::VERTEX_SHADER, "deferred/light_volumes.vert"),
-        (glow::FRAGMENT_SHADER, "deferred/light_volumes.frag"),
-    ])?;
-    program.bind_uniform_block("Lights", LIGHTS_BINDING);
-    Ok(Box::new(StencilLightVolumes { program }))
+    Ok(Box::new(StencilLightVolumes {
+        program: volume_program(p)?,
+    }))
 }
 
 impl RunPasses for StencilLightVolumes {
+    /// light_volumes.rs's pass (the G-buffer's depth and zero stencil
+    /// copied, light added on black), with the stencilled volumes.
     fn run(&self, _: &Pass, f: &Frame) {
-        let (gl, p) = (f.gl, &self.program);
-        let gbuf = f.targets.get(gbuffer::NAME);
-        let target = f.targets.get(LIGHT_ACCUMULATION);
-        copy_depth(gl, gbuf, target);
-        unsafe {
-            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
-            gl.viewport(0, 0, target.width, target.height);
-            gl.clear_color(0.0, 0.0, 0.0, 0.0);
-            gl.clear_stencil(0);
-            gl.clear(glow::COLOR_BUFFER_BIT | glow::STENCIL_BUFFER_BIT);
-            p.use_program();
-            gbuffer::bind_for_reading(gl, p, gbuf, f.uniforms);
-            gl.bind_buffer_base(
-                glow::UNIFORM_BUFFER,
-                LIGHTS_BINDING,
-                Some(f.uniforms.lights_ubo),
-            );
-        }
-        draw_stencilled_volumes(f, p);
-        draw_full_screen_lights(f, p);
-        unsafe {
-            gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
-            gbuffer::unbind(gl);
-            gl.use_program(None);
-            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-        }
+        volume_pass(f, &self.program, draw_stencilled_volumes);
     }
 }
 

@@ -22,6 +22,13 @@ struct Cli {
     /// GL debug output on; any GL error is fatal.
     #[arg(long, global = true)]
     debug: bool,
+    /// Set a scene-file key, as if written in the file: render.cutoff=0.01,
+    /// render.path=volumes, render.ambient=[0.1,0.1,0.1]. Repeatable.
+    #[arg(long = "set", global = true, value_name = "KEY=VALUE")]
+    set: Vec<String>,
+    /// Demo: start with the panel hidden (Tab shows it).
+    #[arg(long)]
+    no_panel: bool,
     /// Demo: exit after this many frames (smoke tests).
     #[arg(long)]
     frames: Option<u32>,
@@ -115,10 +122,11 @@ pub fn render_to_png(scene: &Scene, backend: Backend, debug: bool, out: &Path) -
 
 fn load_scene(
     path: &Path,
+    overrides: &[String],
     render_path: Option<RenderPath>,
     lights: Option<usize>,
 ) -> Result<Scene> {
-    let mut scene = Scene::load(&assets::scene_path(path))?;
+    let mut scene = Scene::load_with(&assets::scene_path(path), overrides)?;
     if let Some(p) = render_path {
         scene.render.path = p;
     }
@@ -147,10 +155,12 @@ fn run(cli: Cli) -> Result<()> {
                         debug: cli.debug,
                         frames: cli.frames,
                         size: (1280, 720),
+                        overrides: cli.set.clone(),
+                        panel: !cli.no_panel,
                     },
                 )
             } else {
-                let scene = Scene::load(&scene_path)?;
+                let scene = Scene::load_with(&scene_path, &cli.set)?;
                 let out = std::env::current_dir()?.join(format!("gloss-{}.png", scene.name));
                 let backend = headless_backend(cli.backend)?;
                 render_to_png(&scene, backend, cli.debug, &out)?;
@@ -170,7 +180,7 @@ fn run(cli: Cli) -> Result<()> {
             shading,
             lights,
         }) => {
-            let mut s = load_scene(&scene, path, lights)?;
+            let mut s = load_scene(&scene, &cli.set, path, lights)?;
             if let Some(sh) = shading {
                 s.render.shading = sh;
             }
@@ -197,7 +207,7 @@ fn run(cli: Cli) -> Result<()> {
             path,
             lights,
         }) => {
-            let s = load_scene(&scene, path, lights)?;
+            let s = load_scene(&scene, &cli.set, path, lights)?;
             print!("{}", gloss::techniques::plan(&s));
             Ok(())
         }

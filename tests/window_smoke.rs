@@ -94,3 +94,101 @@ fn window_without_display_fails_cleanly() {
         describe(&out)
     );
 }
+
+/// The demo driven as a student would, with synthetic X input (xdotool):
+/// switch to light volumes (3), turn on the stencil test (V), open the pass
+/// inspector on the first view (I: the G-buffer's normals), take a
+/// screenshot (F12) and one with the panel (Shift+F12), quit (Esc). The
+/// screenshots are checked: the floor's normal (0, 1, 0) shows as
+/// (128, 255, 128), and the panel's rectangle holds text.
+#[test]
+fn demo_driven_by_keys_switches_inspects_and_screenshots() {
+    if std::env::var("GLOSS_SKIP_WINDOW_TEST").as_deref() == Ok("1") {
+        eprintln!("skipped: GLOSS_SKIP_WINDOW_TEST=1");
+        return;
+    }
+    assert!(
+        xvfb_run_installed() && Command::new("xdotool").arg("version").output().is_ok(),
+        "xvfb-run and xdotool are needed (.ci/run installs them), \
+         or set GLOSS_SKIP_WINDOW_TEST=1 to skip this test"
+    );
+    let dir = std::env::temp_dir().join("gloss-demo-keys");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    // Each key is pressed, then the script waits for the frame that shows it.
+    let script = format!(
+        r#"
+        "{GLOSS}" --backend window --debug --frames 3000 mixed-lights > gloss.log 2>&1 &
+        pid=$!
+        wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
+        xdotool windowfocus --sync "$wid"
+        sleep 3
+        for k in 3 v i F12 shift+F12; do xdotool key --clearmodifiers "$k"; sleep 2; done
+        xdotool key Escape
+        wait $pid
+        "#
+    );
+    let out = Command::new("xvfb-run")
+        .args([
+            "-a",
+            "-s",
+            "-screen 0 1280x720x24",
+            "timeout",
+            "300",
+            "bash",
+            "-c",
+        ])
+        .arg(&script)
+        .current_dir(&dir)
+        .output()
+        .expect("could not start xvfb-run");
+    let log = std::fs::read_to_string(dir.join("gloss.log")).unwrap_or_default();
+    assert!(
+        out.status.success(),
+        "the driven demo failed\n{}\n--- gloss.log ---\n{log}",
+        describe(&out)
+    );
+    assert!(
+        !log.to_lowercase().contains("error") && !log.contains("panicked"),
+        "the demo reported an error:\n{log}"
+    );
+    let shot = |n: u32| {
+        let p = dir.join(format!("gloss-screenshot-{n}.png"));
+        image::open(&p)
+            .unwrap_or_else(|e| panic!("{}: {e}\n--- gloss.log ---\n{log}", p.display()))
+            .to_rgba8()
+    };
+    let (normals, with_panel) = (shot(1), shot(2));
+    assert_eq!(normals.dimensions(), (1280, 720));
+    // The floor fills the bottom middle of mixed-lights' view.
+    let floor = normals.get_pixel(640, 690).0;
+    for (c, want) in floor[..3].iter().zip([128u8, 255, 128]) {
+        assert!(
+            c.abs_diff(want) <= 3,
+            "inspector's normal view at the floor: {floor:?}, expected about (128, 255, 128)"
+        );
+    }
+    // The panel (left, about 340 px wide) is dark with light text; the
+    // frame without it has none of that text.
+    let light = |img: &image::RgbaImage| {
+        let mut n = 0;
+        for y in 100..700 {
+            for x in 10..300 {
+                let p = img.get_pixel(x, y).0;
+                if p[..3].iter().all(|&c| c > 170) {
+                    n += 1;
+                }
+            }
+        }
+        n
+    };
+    assert!(
+        light(&with_panel) > 500,
+        "text pixels in the panel: {}",
+        light(&with_panel)
+    );
+    assert!(
+        log.contains("gloss-screenshot-1.png") && log.contains("gloss-screenshot-2.png"),
+        "the demo says where its screenshots went:\n{log}"
+    );
+}

@@ -1,34 +1,45 @@
-//! The interactive demo: a window that shows the renderer's frames live.
+//! The interactive demo: a window where the course is explored. Each frame
+//! the renderer runs the frame plan into its own framebuffer; the demo shows
+//! that (or, in the pass inspector, one of the plan's targets) in the window,
+//! draws the panel (egui) over it, restores the GL state egui changed, and
+//! swaps.
 //!
-//! Each frame the renderer draws into its own framebuffer (`Renderer::output`)
-//! and the demo copies that to the window with glBlitFramebuffer, then swaps.
-//! Left-drag orbits around the scene camera's target, the wheel zooms, Esc or
-//! closing the window quits. The title shows the scene and the frame time,
-//! measured with the CPU clock from one swap to the next.
-//!
-//! The files: `orbit` (the camera control), `shaders` (live shader reload),
-//! `present` (the blit to the window), `clock` (the title's frame time).
+//! The files: `panel/` (the egui panel: scene, techniques and their
+//! settings, inspector, timings, plan, keys), `actions` (carrying out what
+//! the panel and the keys ask), `inspector` (the view pass), `keys`,
+//! `screenshot`, `orbit` (the camera), `shaders` (live reload of glsl/),
+//! `present` (the blit to the window and the state restore after egui).
 
+mod actions;
 mod clock;
+mod frame;
+pub mod inspector;
+mod keys;
 mod orbit;
+pub mod panel;
 mod present;
+
+pub use present::restore_after_egui;
+mod screenshot;
 mod shaders;
 
+use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Sources;
 use crate::gl::window::{self, WindowContext};
 use crate::renderer::Renderer;
 use crate::scene::Scene;
 use anyhow::{Context as _, Result, anyhow, bail};
 use clock::TitleClock;
+use inspector::Inspector;
 use orbit::Orbit;
-use present::present;
+use panel::PanelState;
 use shaders::{shader_names, shader_sources};
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
 use winit::application::ApplicationHandler;
 use winit::dpi::{PhysicalPosition, PhysicalSize};
 use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow};
-use winit::keyboard::{Key, NamedKey};
 use winit::window::{Window, WindowId};
 
 /// How the demo runs.
@@ -40,6 +51,10 @@ pub struct DemoOptions {
     pub frames: Option<u32>,
     /// Initial window size in pixels.
     pub size: (u32, u32),
+    /// `--set KEY=VALUE` overrides of the scene file.
+    pub overrides: Vec<String>,
+    /// Start with the panel shown.
+    pub panel: bool,
 }
 
 /// Open a window on `scene_path` and run until it is closed (or for `options.frames` frames).
@@ -49,16 +64,20 @@ pub fn run(scene_path: &Path, options: DemoOptions) -> Result<()> {
         bail!("the window size must be between 1x1 and 16384x16384, not {w}x{h}");
     }
     // Load the scene before opening anything: a bad file fails fast.
-    let scene = Scene::load(scene_path)?;
+    let scene = Scene::load_with(scene_path, &options.overrides)?;
     let event_loop = window::event_loop()?;
     event_loop.set_control_flow(ControlFlow::Poll);
     let mut demo = Demo {
         orbit: Orbit::new(&scene.camera),
+        scene_path: scene_path.to_path_buf(),
+        scene_seen: modified(scene_path),
         scene,
         options,
         sources: shader_sources(),
         running: None,
         error: None,
+        message: None,
+        status: None,
     };
     event_loop
         .run_app(&mut demo)
@@ -72,26 +91,48 @@ pub fn run(scene_path: &Path, options: DemoOptions) -> Result<()> {
 }
 
 struct Demo {
+    scene_path: PathBuf,
+    /// The scene as loaded, with the panel's edits.
     scene: Scene,
+    scene_seen: Option<std::time::SystemTime>,
     options: DemoOptions,
     sources: Sources,
     orbit: Orbit,
     running: Option<Running>,
+    /// The error that ends the demo.
     error: Option<anyhow::Error>,
+    /// The last error shown in the panel (a scene that failed to load, a
+    /// shader that failed to compile); the old state keeps running.
+    message: Option<String>,
+    /// The last thing done, shown in the panel (a screenshot's path).
+    status: Option<String>,
 }
 
-/// Everything that lives while the window is open.
+/// Everything that lives while the window is open. Declared in drop order:
+/// GL objects before `ctx`, whose context they need.
 struct Running {
-    // Declared before `ctx`: its GL objects are freed while the context lives.
     renderer: Renderer,
+    egui: egui_glow::EguiGlow,
+    panel: PanelState,
+    inspector: Inspector,
+    /// What the inspector draws into (never one of the renderer's targets).
+    inspect_fb: Option<Framebuffer>,
     ctx: WindowContext,
     frames: u32,
     left_down: bool,
     cursor: Option<PhysicalPosition<f64>>,
     title: TitleClock,
-    /// Live shader reload: when glsl/ was last seen changed, and when we last looked.
+    last_swap: Instant,
+    /// A screenshot asked for: Some(true) with the panel, Some(false) without.
+    screenshot: Option<bool>,
+    modifiers: winit::keyboard::ModifiersState,
+    /// Live reload: when glsl/ and the scene file were last looked at.
     shaders_seen: Option<std::time::SystemTime>,
-    shaders_checked: std::time::Instant,
+    checked: Instant,
+}
+
+fn modified(path: &Path) -> Option<std::time::SystemTime> {
+    std::fs::metadata(path).and_then(|m| m.modified()).ok()
 }
 
 impl Demo {
@@ -119,72 +160,62 @@ impl Demo {
             &ctx.debug,
             &self.scene,
             &self.sources,
-            to_i32(w),
-            to_i32(h),
+            to_i32(w.max(1)),
+            to_i32(h.max(1)),
         )
         .with_context(|| format!("could not set up the renderer for {}", self.scene.name))?;
+        let egui = egui_glow::EguiGlow::new(event_loop, ctx.gl.clone(), None, None, true);
+        let mut panel = PanelState::new(&self.scene_path.display().to_string());
+        panel.open = self.options.panel;
         Ok(Running {
             renderer,
+            egui,
+            panel,
+            inspector: Inspector::new(&ctx.gl, &self.sources)?,
+            inspect_fb: None,
             ctx,
             frames: 0,
             left_down: false,
             cursor: None,
             title: TitleClock::new(),
+            last_swap: Instant::now(),
+            screenshot: None,
+            modifiers: Default::default(),
             shaders_seen: self.sources.modified(&shader_names()),
-            shaders_checked: std::time::Instant::now(),
+            checked: Instant::now(),
         })
     }
 
-    /// Render, blit to the window, swap. Returns whether the demo should stop.
-    fn frame(&mut self) -> Result<bool> {
-        let Some(run) = self.running.as_mut() else {
-            return Ok(false);
-        };
-        if let Some(n) = self.options.frames
-            && run.frames >= n
-        {
-            return Ok(true);
-        }
-        let (w, h) = run.ctx.size();
-        if w == 0 || h == 0 {
-            return Ok(false); // minimised
-        }
-        self.reload_shaders_if_changed();
-        let Some(run) = self.running.as_mut() else {
-            return Ok(false);
-        };
-        run.renderer.render(&self.orbit.camera())?;
-        present(&run.ctx, run.renderer.output(), to_i32(w), to_i32(h))?;
-        run.ctx.swap_buffers()?;
-        run.frames += 1;
-        if let Some(ms) = run.title.tick() {
-            run.ctx.window.set_title(&format!(
-                "gloss — {} — {ms:.2} ms/frame ({:.0} fps)",
-                self.scene.name,
-                1000.0 / ms.max(1e-3)
-            ));
-        }
-        Ok(self.options.frames.is_some_and(|n| run.frames >= n))
-    }
-
     fn handle(&mut self, event_loop: &ActiveEventLoop, event: WindowEvent) -> Result<()> {
+        if event == WindowEvent::RedrawRequested {
+            if self.frame()? {
+                event_loop.exit();
+            }
+            return Ok(());
+        }
         let Some(run) = self.running.as_mut() else {
             return Ok(());
         };
+        let to_egui = run.egui.on_window_event(&run.ctx.window, &event);
         match event {
             WindowEvent::CloseRequested | WindowEvent::Destroyed => event_loop.exit(),
-            WindowEvent::KeyboardInput { event, .. }
-                if event.state == ElementState::Pressed
-                    && event.logical_key == Key::Named(NamedKey::Escape) =>
-            {
-                event_loop.exit()
-            }
             // A zero size (minimised) keeps the old size until the window comes back.
             WindowEvent::Resized(size) if size.width > 0 && size.height > 0 => {
                 run.ctx.resize(size.width, size.height);
                 run.renderer
                     .resize(to_i32(size.width), to_i32(size.height))
                     .context("could not resize the renderer")?;
+            }
+            WindowEvent::ModifiersChanged(m) => run.modifiers = m.state(),
+            _ if to_egui.consumed => {}
+            WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
+                if let Some(a) = keys::action(&event.logical_key, run.modifiers.shift_key()) {
+                    if a == keys::KeyAction::Quit {
+                        event_loop.exit();
+                    } else {
+                        self.key(a);
+                    }
+                }
             }
             WindowEvent::MouseInput {
                 button: MouseButton::Left,
@@ -203,7 +234,6 @@ impl Demo {
                 MouseScrollDelta::LineDelta(_, y) => y,
                 MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
             }),
-            WindowEvent::RedrawRequested if self.frame()? => event_loop.exit(),
             _ => {}
         }
         Ok(())
@@ -234,7 +264,11 @@ impl ApplicationHandler for Demo {
     }
 
     fn exiting(&mut self, _event_loop: &ActiveEventLoop) {
-        // Free the renderer's GL objects, then the context, while the display is open.
+        // Free egui's and the renderer's GL objects, then the context, while
+        // the display is open.
+        if let Some(run) = self.running.as_mut() {
+            run.egui.destroy();
+        }
         self.running = None;
     }
 }

@@ -43,3 +43,26 @@ pub(super) fn present(
     }
     ctx.debug.check(gl, "presenting the frame")
 }
+
+/// egui_glow leaves its state behind (scissor test and blending on, its
+/// program, buffers and texture bound): put back the defaults every pass of
+/// the renderer starts from (tests/frame checks each pass leaves them so).
+pub fn restore_after_egui(gl: &glow::Context) {
+    unsafe {
+        gl.disable(glow::SCISSOR_TEST);
+        gl.disable(glow::BLEND);
+        gl.blend_equation(glow::FUNC_ADD);
+        gl.blend_func(glow::ONE, glow::ZERO);
+        gl.disable(glow::FRAMEBUFFER_SRGB);
+        gl.disable(glow::CULL_FACE);
+        gl.disable(glow::DEPTH_TEST);
+        gl.color_mask(true, true, true, true);
+        gl.use_program(None);
+        gl.bind_vertex_array(None);
+        gl.bind_buffer(glow::ARRAY_BUFFER, None);
+        gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, None);
+        gl.active_texture(glow::TEXTURE0);
+        gl.bind_texture(glow::TEXTURE_2D, None);
+        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+    }
+}

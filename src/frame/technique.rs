@@ -17,6 +17,7 @@ use crate::frame::uniforms::FrameUniforms;
 use crate::gl::Gl;
 use crate::gl::program::{Program, Sources};
 use crate::scene::Scene;
+use crate::scene::knobs::Knob;
 use anyhow::Result;
 
 /// A technique's registration.
@@ -33,6 +34,8 @@ pub struct Technique {
     pub scene: &'static str,
     /// Its page under docs/.
     pub docs: &'static str,
+    /// The render settings it reads: the demo's panel shows them with it.
+    pub knobs: &'static [&'static Knob],
     /// The passes it adds to a frame of `scene` (none: it does not run).
     pub passes: fn(&Scene, &FrameLights) -> Vec<Pass>,
     /// The targets those passes need besides the output (none when it does not run).

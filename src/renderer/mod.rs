@@ -21,7 +21,7 @@ use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Sources;
 use crate::gl::{Gl, Headless};
 use crate::lighting;
-use crate::scene::{Camera, Scene};
+use crate::scene::{Camera, RenderSettings, Scene};
 use crate::techniques;
 use anyhow::{Result, bail};
 use glow::HasContext;
@@ -39,6 +39,9 @@ pub struct Renderer {
     draws: DrawList,
     lights_ubo: Buffer,
     meshes: FrameMeshes,
+    /// Where shader text comes from, and the light limit, for programs built later.
+    sources: Sources,
+    max_lights: usize,
     /// The programs of each registered technique the plan uses, by registry index.
     techniques: Vec<Option<Box<dyn RunPasses>>>,
     /// Measure each pass with glFinish + the CPU clock.
@@ -85,19 +88,8 @@ impl Renderer {
             max_lights * LIGHT_STRIDE,
             glow::DYNAMIC_DRAW,
         )?;
-        let defines = [("MAX_LIGHTS", max_lights.to_string())];
-        let programs = Programs {
-            gl,
-            sources,
-            defines: &defines,
-        };
-        let mut built: Vec<Option<Box<dyn RunPasses>>> = Vec::new();
-        built.resize_with(techniques::ALL.len(), || None);
-        for pass in &plan.passes {
-            if built[pass.technique].is_none() {
-                built[pass.technique] = Some((techniques::ALL[pass.technique].create)(&programs)?);
-            }
-        }
+        let mut techniques = Vec::new();
+        techniques.resize_with(techniques::ALL.len(), || None);
         let mut r = Renderer {
             gl: gl.clone(),
             debug: debug.clone(),
@@ -111,13 +103,67 @@ impl Renderer {
             draws: DrawList::new(gl, scene)?,
             lights_ubo,
             meshes: FrameMeshes::new(gl)?,
-            techniques: built,
+            sources: sources.clone(),
+            max_lights,
+            techniques,
             timing: false,
             last_times: PassTimes::default(),
         };
+        r.build_planned_techniques()?;
         r.upload_lights();
         debug.check(gl, "renderer set-up")?;
         Ok(r)
+    }
+
+    /// Build the programs of every technique the plan uses that has none yet.
+    fn build_planned_techniques(&mut self) -> Result<()> {
+        let defines = [("MAX_LIGHTS", self.max_lights.to_string())];
+        let programs = Programs {
+            gl: &self.gl,
+            sources: &self.sources,
+            defines: &defines,
+        };
+        for pass in &self.plan.passes {
+            if self.techniques[pass.technique].is_none() {
+                self.techniques[pass.technique] =
+                    Some((techniques::ALL[pass.technique].create)(&programs)?);
+            }
+        }
+        Ok(())
+    }
+
+    /// Take new render settings (the demo's panel): the lights' derived values,
+    /// the plan and, where they changed, the targets are made again, and the
+    /// programs of techniques the new plan adds are built. The scene's objects
+    /// stay uploaded. On an error the renderer keeps its old settings.
+    pub fn set_render_settings(&mut self, settings: RenderSettings) -> Result<()> {
+        let old = std::mem::replace(&mut self.scene.render, settings);
+        let lights = FrameLights::new(&self.scene);
+        let plan = FramePlan::new(&self.scene, &lights, techniques::ALL);
+        let targets_changed = plan.targets != self.plan.targets;
+        let old_plan = std::mem::replace(&mut self.plan, plan);
+        if let Err(e) = self.build_planned_techniques() {
+            self.scene.render = old;
+            self.plan = old_plan;
+            return Err(e);
+        }
+        if targets_changed {
+            self.targets.clear();
+            self.targets = Targets::new(
+                &self.gl,
+                &target_descs(&self.plan, self.output_kind),
+                self.width,
+                self.height,
+            )?;
+        }
+        self.lights = lights;
+        self.upload_lights();
+        self.debug.check(&self.gl, "changing the render settings")
+    }
+
+    /// The render targets of the current plan (the demo's pass inspector).
+    pub fn targets(&self) -> &Targets {
+        &self.targets
     }
 
     /// Write the scene's lights into the uniform buffer.

@@ -10,6 +10,7 @@
 //! (`resolve`), and the seeded many-lights generator (`light_grid`).
 
 mod file;
+pub mod knobs;
 mod light_grid;
 mod resolve;
 mod settings;
@@ -24,6 +25,7 @@ use file::SceneFile;
 use glam::{Mat4, Vec3};
 use light_grid::generate_lights;
 use resolve::resolve;
+use serde::Deserialize as _;
 use std::path::{Path, PathBuf};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -59,7 +61,7 @@ impl Camera {
     }
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct RenderSettings {
     pub path: RenderPath,
     pub shading: Shading,
@@ -152,8 +154,37 @@ pub struct Scene {
     pub camera: Camera,
     pub render: RenderSettings,
     pub lights: Vec<Light>,
+    /// How many of `lights` a `[light_grid]` generated (None: the scene has none).
+    pub grid_lights: Option<usize>,
     pub materials: Vec<Material>,
     pub objects: Vec<Object>,
+}
+
+/// Set `table.key = value` in a parsed scene file, making tables as needed.
+fn apply_override(table: &mut toml::Table, assignment: &str) -> Result<()> {
+    let (key, value) = assignment
+        .split_once('=')
+        .ok_or_else(|| anyhow!("expected KEY=VALUE, such as render.cutoff=0.01"))?;
+    let (key, value) = (key.trim(), value.trim());
+    let value = match toml::from_str::<toml::Table>(&format!("v = {value}")) {
+        Ok(mut t) => t.remove("v").expect("the one key"),
+        Err(_) => toml::Value::String(value.to_string()),
+    };
+    let mut parts: Vec<&str> = key.split('.').collect();
+    let last = parts
+        .pop()
+        .filter(|k| !k.is_empty())
+        .ok_or_else(|| anyhow!("empty key"))?;
+    let mut t = table;
+    for p in parts {
+        t = t
+            .entry(p)
+            .or_insert_with(|| toml::Value::Table(toml::Table::new()))
+            .as_table_mut()
+            .ok_or_else(|| anyhow!("{p} is not a table"))?;
+    }
+    t.insert(last.to_string(), value);
+    Ok(())
 }
 
 /// The largest scene file gloss reads (scene files are small; this stops a
@@ -175,6 +206,34 @@ impl Scene {
     /// src/assets.rs).
     pub fn load(path: &Path) -> Result<Scene> {
         Scene::parse(&read_text(path)?, path)
+    }
+
+    /// `load`, with `KEY=VALUE` overrides applied to the file's text as if
+    /// written in it (`--set render.cutoff=0.01`; see `knobs`).
+    pub fn load_with(path: &Path, overrides: &[String]) -> Result<Scene> {
+        Scene::parse_with(&read_text(path)?, path, overrides)
+    }
+
+    /// `parse`, with `KEY=VALUE` overrides. VALUE is TOML (`0.01`, `true`,
+    /// `[0.1, 0.1, 0.1]`, `"volumes"`); a bare word is taken as a string.
+    pub fn parse_with(text: &str, path: &Path, overrides: &[String]) -> Result<Scene> {
+        if overrides.is_empty() {
+            return Scene::parse(text, path);
+        }
+        let mut table: toml::Table = toml::from_str(text)
+            .map_err(|e| anyhow!("{}: {}", path.display(), e.to_string().trim_end()))?;
+        for o in overrides {
+            apply_override(&mut table, o).map_err(|e| anyhow!("--set {o}: {e}"))?;
+        }
+        let file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
+            anyhow!(
+                "{} with --set {}: {}",
+                path.display(),
+                overrides.join(" --set "),
+                e.to_string().trim_end()
+            )
+        })?;
+        resolve(file, path).map_err(|e| anyhow!("{}: {e}", path.display()))
     }
 
     /// Parse scene text; `path` names the file in messages and anchors relative paths.
@@ -199,6 +258,7 @@ impl Scene {
         let fixed = file.lights.len();
         self.lights.truncate(fixed);
         self.lights.extend(generate_lights(&grid));
+        self.grid_lights = Some(count);
         Ok(())
     }
 

@@ -48,6 +48,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
     Ok(Scene {
         name,
         path: path.to_path_buf(),
+        grid_lights: f.light_grid.as_ref().map(|g| g.count),
         camera,
         render,
         lights,

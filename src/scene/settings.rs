@@ -21,6 +21,8 @@ macro_rules! setting {
         impl $name {
             /// Every choice, in declaration order.
             pub const ALL: &'static [$name] = &[$($name::$variant),+];
+            /// Their words, in the same order.
+            pub const WORDS: &'static [&'static str] = &[$($word),+];
 
             /// The word a scene file uses.
             pub fn name(self) -> &'static str {

@@ -15,6 +15,7 @@ use crate::frame::targets::{LIGHT_ACCUMULATION, OUTPUT, TargetDesc};
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::program::Program;
+use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 use glam::Mat4;
@@ -27,6 +28,7 @@ pub const COMPOSITE: Technique = Technique {
     shaders: &["common/fullscreen.vert", "deferred/composite.frag"],
     scene: "scenes/deferred-shading.toml",
     docs: "docs/deferred/composite.md",
+    knobs: &[&knobs::AMBIENT, &knobs::BACKGROUND],
     passes,
     targets,
     create,

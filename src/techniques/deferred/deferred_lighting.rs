@@ -22,6 +22,7 @@ use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, OUTPUT, TargetDesc};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::program::Program;
+use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
 use crate::techniques::deferred::light_volumes::{draw_bounded_volumes, volume_pass};
 use anyhow::Result;
@@ -39,6 +40,12 @@ pub const DEFERRED_LIGHTING: Technique = Technique {
     ],
     scene: "scenes/light-prepass.toml",
     docs: "docs/deferred/deferred_lighting.md",
+    knobs: &[
+        &knobs::CUTOFF,
+        &knobs::ACCUMULATION,
+        &knobs::AMBIENT,
+        &knobs::BACKGROUND,
+    ],
     passes,
     targets,
     create,

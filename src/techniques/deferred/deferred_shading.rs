@@ -24,6 +24,7 @@ use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::LIGHTS_BINDING;
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::program::Program;
+use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 use glam::Mat4;
@@ -36,6 +37,7 @@ pub const DEFERRED_SHADING: Technique = Technique {
     shaders: &["common/fullscreen.vert", "deferred/deferred_shading.frag"],
     scene: "scenes/deferred-shading.toml",
     docs: "docs/deferred/deferred_shading.md",
+    knobs: &[&knobs::ACCUMULATION],
     passes,
     targets,
     create,

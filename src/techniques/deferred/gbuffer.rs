@@ -16,6 +16,7 @@ use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::program::Program;
+use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 use glow::HasContext;
@@ -27,6 +28,7 @@ pub const GBUFFER: Technique = Technique {
     shaders: &["deferred/gbuffer.vert", "deferred/gbuffer.frag"],
     scene: "scenes/deferred-shading.toml",
     docs: "docs/deferred/gbuffer.md",
+    knobs: &[&knobs::DEPTH_FUNC],
     passes,
     targets,
     create,

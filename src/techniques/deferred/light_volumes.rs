@@ -38,6 +38,7 @@ use crate::frame::uniforms::LIGHTS_BINDING;
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Program;
+use crate::scene::knobs;
 use crate::scene::{LightKind, RenderPath, Scene};
 use crate::techniques::deferred::deferred_shading::accumulation_target;
 use anyhow::Result;
@@ -51,6 +52,11 @@ pub const LIGHT_VOLUMES: Technique = Technique {
     shaders: &["deferred/light_volumes.vert", "deferred/light_volumes.frag"],
     scene: "scenes/mixed-lights.toml",
     docs: "docs/deferred/light_volumes.md",
+    knobs: &[
+        &knobs::CUTOFF,
+        &knobs::STENCIL_VOLUMES,
+        &knobs::ACCUMULATION,
+    ],
     passes,
     targets,
     create,

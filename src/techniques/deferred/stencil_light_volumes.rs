@@ -28,6 +28,7 @@ use crate::frame::plan::Pass;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::program::Program;
+use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
 use crate::techniques::deferred::deferred_shading::accumulation_target;
 use crate::techniques::deferred::light_volumes::{describe_volumes, volume_pass, volume_program};
@@ -41,6 +42,11 @@ pub const STENCIL_LIGHT_VOLUMES: Technique = Technique {
     shaders: &["deferred/light_volumes.vert", "deferred/light_volumes.frag"],
     scene: "scenes/stencil-volumes.toml",
     docs: "docs/deferred/stencil_light_volumes.md",
+    knobs: &[
+        &knobs::STENCIL_VOLUMES,
+        &knobs::CUTOFF,
+        &knobs::ACCUMULATION,
+    ],
     passes,
     targets,
     create,

@@ -21,6 +21,7 @@ use crate::frame::targets::{OUTPUT, TargetDesc};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Technique};
 use crate::gl::program::Program;
+use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene, Shading};
 use anyhow::Result;
 use glow::HasContext;
@@ -40,6 +41,12 @@ pub const FORWARD: Technique = Technique {
     ],
     scene: "scenes/shading-phong.toml",
     docs: "docs/lighting/forward.md",
+    knobs: &[
+        &knobs::SHADING,
+        &knobs::DEPTH_FUNC,
+        &knobs::AMBIENT,
+        &knobs::BACKGROUND,
+    ],
     passes,
     targets,
     create,

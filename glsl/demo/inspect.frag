@@ -1,0 +1,38 @@
+#version 330 core
+// The demo's pass inspector: one render target's attachment drawn over the
+// window, made visible. u_mode picks how:
+//   0 colour as stored (the output's sRGB bytes, or a linear colour encoded)
+//   1 normal: n * 0.5 + 0.5                2 shininess: alpha / 256
+//   3 HDR light: exposure x value, encoded  4 depth, linearised near..far
+#include "common/lighting_output.glsl"
+uniform sampler2D u_texture;
+uniform int u_mode;
+uniform bool u_encode;      // mode 0: the texture holds linear colour
+uniform float u_exposure;
+uniform float u_near;
+uniform float u_far;
+uniform bool u_orthographic; // depth is then linear already
+uniform vec2 u_viewport;    // the size drawn into, in pixels
+out vec4 frag_color;
+
+void main() {
+    vec4 t = texture(u_texture, gl_FragCoord.xy / u_viewport);
+    vec3 c;
+    if (u_mode == 0) {
+        c = u_encode ? srgb_encode(t.rgb) : t.rgb;
+    } else if (u_mode == 1) {
+        c = t.xyz * 0.5 + 0.5;
+    } else if (u_mode == 2) {
+        c = vec3(t.a / 256.0);
+    } else if (u_mode == 3) {
+        c = srgb_encode(t.rgb * u_exposure);
+    } else {
+        // Window depth d in [0, 1] back to eye distance, then to [0, 1] over near..far.
+        float z = t.r * 2.0 - 1.0;
+        float dist = u_orthographic
+            ? u_near + t.r * (u_far - u_near)
+            : 2.0 * u_near * u_far / (u_far + u_near - z * (u_far - u_near));
+        c = vec3(t.r == 1.0 ? 1.0 : (dist - u_near) / (u_far - u_near));
+    }
+    frag_color = vec4(c, 1.0);
+}

@@ -1,0 +1,167 @@
+//! Carrying out what the panel and the keys ask: loading a scene (the old
+//! one keeps running when the new one fails), new render settings, a new
+//! light count, the inspector's view, screenshots; and reloading the scene
+//! file or the shaders when they change on disk.
+
+use super::keys::KeyAction;
+use super::panel::Action;
+use super::shaders::shader_names;
+use super::{Demo, inspector, modified, to_i32};
+use crate::assets;
+use crate::renderer::Renderer;
+use crate::scene::{RenderPath, Scene, Shading};
+use anyhow::Result;
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+impl Demo {
+    pub(super) fn apply(&mut self, action: Action) {
+        let result = match action {
+            Action::Load(path) => self.load(&assets::scene_path(&path)),
+            Action::Reload => self.load(&self.scene_path.clone()),
+            Action::Settings(s) => match self.running.as_mut() {
+                Some(run) => run.renderer.set_render_settings(s.clone()).map(|()| {
+                    self.scene.render = s;
+                }),
+                None => Ok(()),
+            },
+            Action::Lights(n) => {
+                let mut scene = self.scene.clone();
+                scene
+                    .set_light_count(n)
+                    .and_then(|()| self.rebuild(&scene).map(|()| self.scene = scene))
+            }
+            Action::Inspect(view) => {
+                if let Some(run) = self.running.as_mut() {
+                    run.panel.inspect = view;
+                }
+                Ok(())
+            }
+            Action::Screenshot(with_panel) => {
+                if let Some(run) = self.running.as_mut() {
+                    run.screenshot = Some(with_panel);
+                }
+                Ok(())
+            }
+            Action::ResetCamera => {
+                self.orbit = super::Orbit::new(&self.scene.camera);
+                Ok(())
+            }
+        };
+        match result {
+            Ok(()) => self.message = None,
+            Err(e) => {
+                eprintln!("gloss: {e:#}");
+                self.message = Some(format!("{e:#}"));
+            }
+        }
+    }
+
+    pub(super) fn key(&mut self, key: KeyAction) {
+        let mut settings = self.scene.render.clone();
+        let action = match key {
+            KeyAction::TogglePanel | KeyAction::Help => {
+                if let Some(run) = self.running.as_mut() {
+                    if key == KeyAction::Help {
+                        run.panel.help = !run.panel.help;
+                    } else {
+                        run.panel.open = !run.panel.open;
+                    }
+                }
+                return;
+            }
+            KeyAction::Screenshot(with_panel) => Action::Screenshot(with_panel),
+            KeyAction::Reload => Action::Reload,
+            KeyAction::ResetCamera => Action::ResetCamera,
+            KeyAction::Path(i) => {
+                settings.path = RenderPath::ALL[i.min(RenderPath::ALL.len() - 1)];
+                Action::Settings(settings)
+            }
+            KeyAction::NextShading => {
+                let i = Shading::ALL.iter().position(|&s| s == settings.shading);
+                settings.shading = Shading::ALL[(i.unwrap_or(0) + 1) % Shading::ALL.len()];
+                Action::Settings(settings)
+            }
+            KeyAction::ToggleStencil => {
+                settings.stencil_volumes = !settings.stencil_volumes;
+                Action::Settings(settings)
+            }
+            KeyAction::NextView => {
+                let Some(run) = self.running.as_ref() else {
+                    return;
+                };
+                let n = inspector::views(&run.renderer.plan).len();
+                Action::Inspect(match run.panel.inspect {
+                    None if n > 0 => Some(0),
+                    Some(i) if i + 1 < n => Some(i + 1),
+                    _ => None,
+                })
+            }
+            KeyAction::Quit => return,
+        };
+        self.apply(action);
+    }
+
+    /// Load `path` (with the command line's overrides) and make it the
+    /// scene; on any error the old scene keeps running.
+    fn load(&mut self, path: &Path) -> Result<()> {
+        let scene = Scene::load_with(path, &self.options.overrides)?;
+        self.rebuild(&scene)?;
+        if let Some(run) = self.running.as_mut() {
+            run.panel.inspect = None;
+        }
+        self.orbit = super::Orbit::new(&scene.camera);
+        self.scene = scene;
+        self.scene_path = path.to_path_buf();
+        self.scene_seen = modified(path);
+        self.status = Some(format!("loaded {}", path.display()));
+        Ok(())
+    }
+
+    /// A new renderer for `scene` at the window's size; the old one stays on error.
+    pub(super) fn rebuild(&mut self, scene: &Scene) -> Result<()> {
+        let Some(run) = self.running.as_mut() else {
+            return Ok(());
+        };
+        let (w, h) = run.ctx.size();
+        let renderer = Renderer::new(
+            &run.ctx.gl,
+            &run.ctx.debug,
+            scene,
+            &self.sources,
+            to_i32(w.max(1)),
+            to_i32(h.max(1)),
+        )?;
+        run.renderer = renderer;
+        Ok(())
+    }
+
+    /// Twice a second: has the scene file or a shader in glsl/ changed on
+    /// disk? Then load it again; a failure is shown and the old one kept.
+    pub(super) fn reload_if_changed(&mut self) {
+        let Some(run) = self.running.as_mut() else {
+            return;
+        };
+        if run.checked.elapsed() < Duration::from_millis(500) {
+            return;
+        }
+        run.checked = Instant::now();
+        let shaders = self.sources.modified(&shader_names());
+        if shaders != run.shaders_seen {
+            run.shaders_seen = shaders;
+            let scene = self.scene.clone();
+            match self.rebuild(&scene) {
+                Ok(()) => self.status = Some("shaders reloaded from glsl/".into()),
+                Err(e) => {
+                    eprintln!("gloss: shader reload failed, keeping the old shaders:\n{e:#}");
+                    self.message = Some(format!("shader reload failed: {e:#}"));
+                }
+            }
+        }
+        let scene = modified(&self.scene_path);
+        if scene.is_some() && scene != self.scene_seen {
+            self.scene_seen = scene;
+            self.apply(Action::Reload);
+        }
+    }
+}

@@ -1,0 +1,141 @@
+//! One frame of the demo: render the plan, show the output (or the
+//! inspected target), take a screenshot if asked, draw the panel, restore
+//! the GL state egui changed, swap; then carry out what the panel asked.
+
+use super::panel::PanelInput;
+use super::{Demo, inspector, present, screenshot, to_i32};
+use crate::assets;
+use crate::gl::framebuffer::Framebuffer;
+use anyhow::Result;
+use std::path::PathBuf;
+use std::time::Instant;
+
+impl Demo {
+    /// Render, show, draw the panel, swap. Returns whether the demo should stop.
+    pub(super) fn frame(&mut self) -> Result<bool> {
+        let Some(run) = self.running.as_mut() else {
+            return Ok(false);
+        };
+        if let Some(n) = self.options.frames
+            && run.frames >= n
+        {
+            return Ok(true);
+        }
+        let (w, h) = run.ctx.size();
+        if w == 0 || h == 0 {
+            return Ok(false); // minimised
+        }
+        self.reload_if_changed();
+        let Some(run) = self.running.as_mut() else {
+            return Ok(false);
+        };
+        let camera = self.orbit.camera();
+        // Pass times are measured (glFinish after each pass) while the panel shows them.
+        run.renderer.timing = run.panel.open;
+        run.renderer.render(&camera)?;
+
+        // 1. The image: the final frame, or the inspected target.
+        let views = inspector::views(&run.renderer.plan);
+        let view = run.panel.inspect.and_then(|i| views.get(i));
+        let shown = match view {
+            None => run.renderer.output(),
+            Some(v) => {
+                let size = (run.renderer.width, run.renderer.height);
+                if run.inspect_fb.as_ref().map(|f| (f.width, f.height)) != Some(size) {
+                    run.inspect_fb = None;
+                    run.inspect_fb = Some(Framebuffer::new(
+                        &run.ctx.gl,
+                        "inspector",
+                        size.0,
+                        size.1,
+                        &[glow::RGBA8],
+                        None,
+                    )?);
+                }
+                let fb = run.inspect_fb.as_ref().expect("made above");
+                run.inspector.draw(
+                    &run.ctx.gl,
+                    v,
+                    run.renderer.targets(),
+                    &camera,
+                    run.panel.exposure,
+                    fb,
+                );
+                fb
+            }
+        };
+        present::present(&run.ctx, shown, to_i32(w), to_i32(h))?;
+        // 2. A screenshot shows the frame without the panel, unless asked.
+        if run.screenshot == Some(false) {
+            run.screenshot = None;
+            let shot = screenshot::save(&run.ctx.gl, w, h);
+            self.note_screenshot(shot);
+        }
+        let Some(run) = self.running.as_mut() else {
+            return Ok(false);
+        };
+        // 3. The panel, then the state egui leaves behind put back.
+        let shipped = assets::shipped_scenes();
+        let gl_info = format!(
+            "{} — OpenGL {}.{} core",
+            run.ctx.info.renderer, run.ctx.info.major, run.ctx.info.minor
+        );
+        let scene_path = self.scene_path.display().to_string();
+        let input = PanelInput {
+            scene: &self.scene,
+            scene_path: &scene_path,
+            shipped: &shipped,
+            plan: &run.renderer.plan,
+            times: &run.renderer.last_times,
+            views: &views,
+            error: self.message.as_deref(),
+            status: self.status.as_deref(),
+            gl_info: &gl_info,
+        };
+        let mut actions = Vec::new();
+        let panel = &mut run.panel;
+        run.egui
+            .run(&run.ctx.window, |ui| actions = panel.show(ui, &input));
+        run.egui.paint(&run.ctx.window);
+        present::restore_after_egui(&run.ctx.gl);
+        run.ctx.debug.check(&run.ctx.gl, "drawing the panel")?;
+        if run.screenshot == Some(true) {
+            run.screenshot = None;
+            let shot = screenshot::save(&run.ctx.gl, w, h);
+            self.note_screenshot(shot);
+        }
+        let Some(run) = self.running.as_mut() else {
+            return Ok(false);
+        };
+        run.ctx.swap_buffers()?;
+
+        run.frames += 1;
+        let now = Instant::now();
+        run.panel
+            .timings
+            .push((now - run.last_swap).as_secs_f64() * 1000.0);
+        run.last_swap = now;
+        if let Some(ms) = run.title.tick() {
+            run.ctx.window.set_title(&format!(
+                "gloss — {} — {ms:.2} ms/frame ({:.0} fps)",
+                self.scene.name,
+                1000.0 / ms.max(1e-3)
+            ));
+        }
+        let stop = self.options.frames.is_some_and(|n| run.frames >= n);
+        for a in actions {
+            self.apply(a);
+        }
+        Ok(stop)
+    }
+
+    pub(super) fn note_screenshot(&mut self, shot: Result<PathBuf>) {
+        match shot {
+            Ok(path) => {
+                println!("gloss: screenshot {}", path.display());
+                self.status = Some(format!("screenshot: {}", path.display()));
+            }
+            Err(e) => self.message = Some(format!("{e:#}")),
+        }
+    }
+}

@@ -1,0 +1,178 @@
+//! The pass inspector: any attachment of the frame plan's render targets,
+//! drawn over the window so that it can be seen (normals as colours, depth
+//! linearised, light with an exposure), by a full-screen pass with
+//! glsl/demo/inspect.frag. The list of views comes from the plan, so a
+//! technique's targets appear here as soon as it declares them.
+
+use crate::frame::plan::FramePlan;
+use crate::frame::targets::{Depth, Targets, format_name};
+use crate::geometry;
+use crate::gl::Gl;
+use crate::gl::framebuffer::Framebuffer;
+use crate::gl::mesh::Mesh;
+use crate::gl::program::{Program, Sources};
+use crate::scene::{Camera, Projection};
+use anyhow::Result;
+use glam::Mat4;
+use glow::HasContext;
+
+/// How an attachment is made visible (glsl/demo/inspect.frag's u_mode).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Mode {
+    /// Colour as stored; `encode`: linear colour, sRGB-encode it.
+    Color {
+        encode: bool,
+    },
+    Normal,
+    Shininess,
+    /// HDR light, scaled by the exposure.
+    Light,
+    Depth,
+}
+
+/// One view the inspector offers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct View {
+    pub target: &'static str,
+    pub attachment: &'static str,
+    /// None: the depth-stencil attachment.
+    pub color_index: Option<usize>,
+    pub format: u32,
+    pub mode: Mode,
+}
+
+impl View {
+    /// "gbuffer.normal_shininess (RGBA16F)" and what the view shows.
+    pub fn label(&self) -> String {
+        let shows = match self.mode {
+            Mode::Color { .. } => "colour",
+            Mode::Normal => "normal x 0.5 + 0.5",
+            Mode::Shininess => "shininess / 256",
+            Mode::Light => "light x exposure",
+            Mode::Depth => "depth, linearised",
+        };
+        format!(
+            "{}.{} ({}): {shows}",
+            self.target,
+            self.attachment,
+            format_name(self.format)
+        )
+    }
+}
+
+/// Every view of a plan's targets, in the plan's order.
+pub fn views(plan: &FramePlan) -> Vec<View> {
+    let mut v = Vec::new();
+    for t in &plan.targets {
+        for (i, &(name, format)) in t.colors.iter().enumerate() {
+            let color = |mode| View {
+                target: t.name,
+                attachment: name,
+                color_index: Some(i),
+                format,
+                mode,
+            };
+            match name {
+                "normal_shininess" => {
+                    v.push(color(Mode::Normal));
+                    v.push(View {
+                        attachment: "shininess",
+                        ..color(Mode::Shininess)
+                    });
+                }
+                _ if matches!(format, glow::RGBA16F | glow::RGBA32F) => v.push(color(Mode::Light)),
+                _ => v.push(color(Mode::Color {
+                    encode: format == glow::SRGB8_ALPHA8,
+                })),
+            }
+        }
+        if let Depth::Own(format) = t.depth {
+            v.push(View {
+                target: t.name,
+                attachment: "depth",
+                color_index: None,
+                format,
+                mode: Mode::Depth,
+            });
+        }
+    }
+    v
+}
+
+pub struct Inspector {
+    program: Program,
+    fullscreen: Mesh,
+}
+
+impl Inspector {
+    pub fn new(gl: &Gl, sources: &Sources) -> Result<Inspector> {
+        Ok(Inspector {
+            program: Program::new(
+                gl,
+                sources,
+                &[
+                    (glow::VERTEX_SHADER, "common/fullscreen.vert"),
+                    (glow::FRAGMENT_SHADER, "demo/inspect.frag"),
+                ],
+                &[],
+            )?,
+            fullscreen: Mesh::upload(gl, &geometry::fullscreen_triangle())?,
+        })
+    }
+
+    /// Draw `view` into `into` (its own framebuffer, never one of the
+    /// renderer's targets), full size.
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw(
+        &self,
+        gl: &glow::Context,
+        view: &View,
+        targets: &Targets,
+        camera: &Camera,
+        exposure: f32,
+        into: &Framebuffer,
+    ) {
+        let Some(fb) = targets.find(view.target) else {
+            return;
+        };
+        let texture = match view.color_index {
+            Some(i) => fb.colors.get(i).map(|t| t.id),
+            None => fb.depth_stencil.as_ref().map(|t| t.id),
+        };
+        let p = &self.program;
+        let (mode, encode) = match view.mode {
+            Mode::Color { encode } => (0, encode),
+            Mode::Normal => (1, false),
+            Mode::Shininess => (2, false),
+            Mode::Light => (3, false),
+            Mode::Depth => (4, false),
+        };
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(into.id));
+            gl.viewport(0, 0, into.width, into.height);
+            gl.disable(glow::DEPTH_TEST);
+            p.use_program();
+            gl.active_texture(glow::TEXTURE0);
+            gl.bind_texture(glow::TEXTURE_2D, texture);
+            p.set_i32("u_texture", 0);
+            p.set_i32("u_mode", mode);
+            p.set_bool("u_encode", encode);
+            p.set_f32("u_exposure", exposure);
+            p.set_f32("u_near", camera.near);
+            p.set_f32("u_far", camera.far);
+            p.set_bool(
+                "u_orthographic",
+                matches!(camera.projection, Projection::Orthographic { .. }),
+            );
+            p.set_vec2(
+                "u_viewport",
+                glam::Vec2::new(into.width as f32, into.height as f32),
+            );
+            p.set_mat4("u_mvp", &Mat4::IDENTITY);
+            self.fullscreen.draw();
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            gl.use_program(None);
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        }
+    }
+}

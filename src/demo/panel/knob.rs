@@ -1,0 +1,42 @@
+//! One control per knob (src/scene/knobs.rs): a checkbox, a slider, a row
+//! of choices or three numbers for a colour.
+
+use crate::scene::RenderSettings;
+use crate::scene::knobs::{Kind, Knob, Value};
+
+/// Show `k`'s control for `settings`; true when the user changed it.
+pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool {
+    let before = (k.get)(settings);
+    let mut after = before;
+    ui.horizontal(|ui| {
+        ui.label(k.label)
+            .on_hover_text(format!("{}\n{}", k.key, k.help));
+        match (k.kind, &mut after) {
+            (Kind::Bool, Value::Bool(b)) => {
+                ui.checkbox(b, "");
+            }
+            (Kind::Number { min, max, log }, Value::Number(x)) => {
+                ui.add(egui::Slider::new(x, min..=max).logarithmic(log));
+            }
+            (Kind::Choice(words), Value::Choice(i)) => {
+                for (j, w) in words.iter().enumerate() {
+                    ui.selectable_value(i, j, *w);
+                }
+            }
+            (Kind::Color, Value::Color(c)) => {
+                for v in [&mut c.x, &mut c.y, &mut c.z] {
+                    ui.add(egui::DragValue::new(v).range(0.0..=10.0).speed(0.005));
+                }
+            }
+            _ => {
+                ui.label("?");
+            }
+        }
+    });
+    if after != before {
+        (k.set)(settings, after);
+        true
+    } else {
+        false
+    }
+}

@@ -1,0 +1,254 @@
+//! The demo's panel (egui): the scene, the techniques of the frame and their
+//! settings, the pass inspector, per-pass timings, the frame plan and the
+//! keys. It reads the frame through `PanelInput` and answers with `Action`s
+//! that the demo carries out after painting; it changes nothing itself.
+//!
+//! Nothing here names a technique: the technique list and each one's
+//! settings come from the registry (src/techniques/mod.rs) and the knobs it
+//! lists, and the inspector's views from the plan's targets, so a technique
+//! appears here through its one registration.
+
+mod knob;
+mod timings;
+
+pub use timings::Timings;
+
+use super::inspector::View;
+use super::keys::KEYS;
+use crate::frame::plan::FramePlan;
+use crate::frame::timing::PassTimes;
+use crate::scene::{RenderSettings, Scene, knobs};
+use crate::techniques;
+use std::path::PathBuf;
+
+/// What the panel asks the demo to do.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Action {
+    /// Load a scene file (a path, or the name of a shipped scene).
+    Load(PathBuf),
+    Reload,
+    Settings(RenderSettings),
+    Lights(usize),
+    /// Show a view full-window (None: the final image).
+    Inspect(Option<usize>),
+    /// A screenshot; `true`: with the panel.
+    Screenshot(bool),
+    ResetCamera,
+}
+
+/// What the panel shows.
+pub struct PanelInput<'a> {
+    pub scene: &'a Scene,
+    pub scene_path: &'a str,
+    pub shipped: &'a [String],
+    pub plan: &'a FramePlan,
+    pub times: &'a PassTimes,
+    pub views: &'a [View],
+    pub error: Option<&'a str>,
+    pub status: Option<&'a str>,
+    pub gl_info: &'a str,
+}
+
+/// What the panel remembers between frames.
+pub struct PanelState {
+    pub open: bool,
+    pub help: bool,
+    pub inspect: Option<usize>,
+    pub exposure: f32,
+    pub timings: Timings,
+    path_text: String,
+}
+
+impl PanelState {
+    pub fn new(scene_path: &str) -> PanelState {
+        PanelState {
+            open: true,
+            help: false,
+            inspect: None,
+            exposure: 1.0,
+            timings: Timings::default(),
+            path_text: scene_path.to_string(),
+        }
+    }
+
+    /// Draw the panel (and the help overlay) and collect what was asked.
+    pub fn show(&mut self, ui: &mut egui::Ui, input: &PanelInput) -> Vec<Action> {
+        let mut actions = Vec::new();
+        if self.help {
+            help_window(ui, &mut self.help);
+        }
+        if !self.open {
+            return actions;
+        }
+        egui::Panel::left("gloss-panel")
+            .default_size(340.0)
+            .resizable(true)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    ui.heading("gloss");
+                    ui.small(input.gl_info);
+                    if let Some(e) = input.error {
+                        ui.colored_label(egui::Color32::from_rgb(255, 110, 90), e);
+                    }
+                    if let Some(s) = input.status {
+                        ui.label(s);
+                    }
+                    self.scene_section(ui, input, &mut actions);
+                    technique_section(ui, input, &mut actions);
+                    self.inspector_section(ui, input, &mut actions);
+                    self.timings.show(ui, input.times);
+                    egui::CollapsingHeader::new("Frame plan")
+                        .default_open(false)
+                        .show(ui, |ui| {
+                            ui.monospace(input.plan.to_string());
+                        });
+                    egui::CollapsingHeader::new("Keys")
+                        .default_open(false)
+                        .show(ui, keys_grid);
+                });
+            });
+        actions
+    }
+
+    fn scene_section(&mut self, ui: &mut egui::Ui, input: &PanelInput, actions: &mut Vec<Action>) {
+        egui::CollapsingHeader::new("Scene")
+            .default_open(true)
+            .show(ui, |ui| {
+                ui.label(format!("{} ({})", input.scene.name, input.scene_path));
+                egui::ComboBox::from_id_salt("shipped-scenes")
+                    .selected_text("shipped scenes…")
+                    .show_ui(ui, |ui| {
+                        for s in input.shipped {
+                            if ui.selectable_label(false, s).clicked() {
+                                actions.push(Action::Load(PathBuf::from(s)));
+                            }
+                        }
+                    });
+                ui.horizontal(|ui| {
+                    ui.text_edit_singleline(&mut self.path_text);
+                    if ui.button("open").clicked() {
+                        actions.push(Action::Load(PathBuf::from(self.path_text.trim())));
+                    }
+                });
+                ui.horizontal(|ui| {
+                    if ui.button("reload (F5)").clicked() {
+                        actions.push(Action::Reload);
+                    }
+                    if ui.button("reset camera (R)").clicked() {
+                        actions.push(Action::ResetCamera);
+                    }
+                    if ui.button("screenshot (F12)").clicked() {
+                        actions.push(Action::Screenshot(false));
+                    }
+                });
+                if let Some(n) = input.scene.grid_lights {
+                    let mut count = n;
+                    let fixed = input.scene.lights.len() - n;
+                    ui.horizontal(|ui| {
+                        ui.label("light grid:");
+                        let r = ui.add(egui::Slider::new(&mut count, 0..=1024).logarithmic(true));
+                        if r.drag_stopped() || (r.changed() && !r.dragged()) {
+                            actions.push(Action::Lights(count));
+                        }
+                        ui.label(format!("(+{fixed} fixed)"));
+                    });
+                }
+            });
+    }
+
+    fn inspector_section(
+        &mut self,
+        ui: &mut egui::Ui,
+        input: &PanelInput,
+        actions: &mut Vec<Action>,
+    ) {
+        egui::CollapsingHeader::new("Pass inspector")
+            .default_open(true)
+            .show(ui, |ui| {
+                let current = self.inspect;
+                let label = |i: Option<usize>| match i {
+                    None => "output: the final image".to_string(),
+                    Some(i) => input.views.get(i).map(View::label).unwrap_or_default(),
+                };
+                egui::ComboBox::from_id_salt("inspector")
+                    .width(300.0)
+                    .selected_text(label(current))
+                    .show_ui(ui, |ui| {
+                        for i in std::iter::once(None).chain((0..input.views.len()).map(Some)) {
+                            if ui.selectable_label(current == i, label(i)).clicked() {
+                                actions.push(Action::Inspect(i));
+                            }
+                        }
+                    });
+                ui.add(
+                    egui::Slider::new(&mut self.exposure, 0.01..=100.0)
+                        .logarithmic(true)
+                        .text("exposure (light views)"),
+                );
+                if let Some(v) = current.and_then(|i| input.views.get(i)) {
+                    let fb = input
+                        .plan
+                        .target(v.target)
+                        .map(|t| t.attachments().join(", "));
+                    ui.small(format!("{}: {}", v.target, fb.unwrap_or_default()));
+                }
+            });
+    }
+}
+
+/// The lighting path, then every registered technique: those in this frame
+/// with the settings they read, the others named.
+fn technique_section(ui: &mut egui::Ui, input: &PanelInput, actions: &mut Vec<Action>) {
+    egui::CollapsingHeader::new("Techniques")
+        .default_open(true)
+        .show(ui, |ui| {
+            let mut settings = input.scene.render.clone();
+            let mut changed = knob::show(ui, &knobs::PATH, &mut settings);
+            let mut shown = vec![knobs::PATH.key];
+            for (i, t) in techniques::ALL.iter().enumerate() {
+                let runs = input.plan.passes.iter().any(|p| p.technique == i);
+                if !runs {
+                    continue;
+                }
+                ui.separator();
+                ui.strong(t.name)
+                    .on_hover_text(format!("{}\n{}", t.notes, t.file));
+                for k in t.knobs {
+                    if !shown.contains(&k.key) {
+                        shown.push(k.key);
+                        changed |= knob::show(ui, k, &mut settings);
+                    }
+                }
+            }
+            let idle: Vec<&str> = techniques::ALL
+                .iter()
+                .enumerate()
+                .filter(|(i, _)| !input.plan.passes.iter().any(|p| p.technique == *i))
+                .map(|(_, t)| t.name)
+                .collect();
+            if !idle.is_empty() {
+                ui.separator();
+                ui.weak(format!("not in this frame: {}", idle.join(", ")));
+            }
+            if changed {
+                actions.push(Action::Settings(settings));
+            }
+        });
+}
+
+fn keys_grid(ui: &mut egui::Ui) {
+    egui::Grid::new("keys").striped(true).show(ui, |ui| {
+        for (key, what) in KEYS {
+            ui.monospace(*key);
+            ui.label(*what);
+            ui.end_row();
+        }
+    });
+}
+
+fn help_window(ui: &mut egui::Ui, open: &mut bool) {
+    egui::Window::new("gloss — keys (F1)")
+        .open(open)
+        .collapsible(false)
+        .show(ui.ctx(), keys_grid);
+}

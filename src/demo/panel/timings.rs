@@ -1,0 +1,73 @@
+//! Per-pass times of the last frame (the plan's passes, CPU clock around
+//! glFinish: on llvmpipe GL_TIME_ELAPSED under-reports) and a rolling plot
+//! of the frame time.
+
+use crate::frame::timing::PassTimes;
+use std::collections::VecDeque;
+
+/// Frames the plot keeps.
+const HISTORY: usize = 300;
+
+#[derive(Default)]
+pub struct Timings {
+    frames: VecDeque<f64>,
+    count: u64,
+}
+
+impl Timings {
+    /// Note one frame's time (ms, swap to swap).
+    pub fn push(&mut self, frame_ms: f64) {
+        if self.frames.len() == HISTORY {
+            self.frames.pop_front();
+        }
+        self.frames.push_back(frame_ms);
+        self.count += 1;
+    }
+
+    /// The median of the kept frame times.
+    pub fn median(&self) -> Option<f64> {
+        let mut v: Vec<f64> = self.frames.iter().copied().collect();
+        v.sort_by(f64::total_cmp);
+        v.get(v.len() / 2).copied()
+    }
+
+    pub fn show(&self, ui: &mut egui::Ui, times: &PassTimes) {
+        egui::CollapsingHeader::new("Timings")
+            .default_open(true)
+            .show(ui, |ui| {
+                ui.small("clock: CPU around glFinish after each pass");
+                egui::Grid::new("pass-times").striped(true).show(ui, |ui| {
+                    for (name, ms) in &times.passes {
+                        ui.label(*name);
+                        ui.monospace(format!("{ms:8.2} ms"));
+                        ui.end_row();
+                    }
+                    ui.strong("renderer");
+                    ui.monospace(format!("{:8.2} ms", times.frame_ms));
+                    ui.end_row();
+                    if let Some(m) = self.median() {
+                        ui.strong("frame (median)");
+                        ui.monospace(format!("{m:8.2} ms  {:.1} fps", 1000.0 / m.max(1e-3)));
+                        ui.end_row();
+                    }
+                });
+                let start = self.count.saturating_sub(self.frames.len() as u64);
+                let points: Vec<[f64; 2]> = self
+                    .frames
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &ms)| [(start + i as u64) as f64, ms])
+                    .collect();
+                egui_plot::Plot::new("frame-times")
+                    .height(110.0)
+                    .include_y(0.0)
+                    .allow_scroll(false)
+                    .allow_drag(false)
+                    .allow_zoom(false)
+                    .y_axis_label("ms")
+                    .show(ui, |plot| {
+                        plot.line(egui_plot::Line::new("frame time", points));
+                    });
+            });
+    }
+}

@@ -1,0 +1,184 @@
+//! The render settings, described for editing: each knob names its key in
+//! the scene file (`render.cutoff`), what kind of value it takes, and how to
+//! read and write it. The demo's panel draws a control per knob, `--set
+//! KEY=VALUE` on the command line sets the same key as the scene file does
+//! (through the same parser and checks: `Scene::parse_with`), and a technique
+//! lists the knobs it reads in its registration.
+
+use super::RenderSettings;
+use super::settings::{Accumulation, DepthFunc, RenderPath, Shading};
+use glam::Vec3;
+
+/// What a knob holds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Value {
+    Bool(bool),
+    Number(f32),
+    /// An index into the knob's `choices`.
+    Choice(usize),
+    Color(Vec3),
+}
+
+/// The kind of control.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    Bool,
+    /// A number in `min..max` (exclusive ends are enforced by the scene
+    /// loader); `log`: a logarithmic slider.
+    Number {
+        min: f32,
+        max: f32,
+        log: bool,
+    },
+    Choice(&'static [&'static str]),
+    /// A linear RGB colour, each channel >= 0.
+    Color,
+}
+
+pub struct Knob {
+    /// The key in the scene file, `table.key`.
+    pub key: &'static str,
+    pub label: &'static str,
+    /// One line for the panel's tooltip.
+    pub help: &'static str,
+    pub kind: Kind,
+    pub get: fn(&RenderSettings) -> Value,
+    pub set: fn(&mut RenderSettings, Value),
+}
+
+impl Knob {
+    /// The value as TOML (what `--set` and "save as" write).
+    pub fn toml(&self, r: &RenderSettings) -> String {
+        match ((self.get)(r), self.kind) {
+            (Value::Bool(b), _) => b.to_string(),
+            (Value::Number(x), _) => format!("{x:?}"),
+            (Value::Choice(i), Kind::Choice(words)) => format!("\"{}\"", words[i]),
+            (Value::Color(c), _) => format!("[{:?}, {:?}, {:?}]", c.x, c.y, c.z),
+            (Value::Choice(i), _) => i.to_string(),
+        }
+    }
+}
+
+pub static PATH: Knob = Knob {
+    key: "render.path",
+    label: "lighting path",
+    help: "forward, deferred (a full-screen pass per light), volumes (notes 04), prepass (notes 02)",
+    kind: Kind::Choice(RenderPath::WORDS),
+    get: |r| Value::Choice(index(RenderPath::ALL, r.path)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.path = RenderPath::ALL[i];
+        }
+    },
+};
+
+pub static SHADING: Knob = Knob {
+    key: "render.shading",
+    label: "shading",
+    help: "notes 01 §8.2: flat (per triangle), Gouraud (per vertex), Phong (per fragment)",
+    kind: Kind::Choice(Shading::WORDS),
+    get: |r| Value::Choice(index(Shading::ALL, r.shading)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.shading = Shading::ALL[i];
+        }
+    },
+};
+
+pub static DEPTH_FUNC: Knob = Knob {
+    key: "render.depth_func",
+    label: "depth test",
+    help: "GL_LESS (notes 02: fails when d >= D) or GL_LEQUAL (notes 01: passes when z <= D)",
+    kind: Kind::Choice(DepthFunc::WORDS),
+    get: |r| Value::Choice(index(DepthFunc::ALL, r.depth_func)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.depth_func = DepthFunc::ALL[i];
+        }
+    },
+};
+
+pub static CUTOFF: Knob = Knob {
+    key: "render.cutoff",
+    label: "light-volume cutoff",
+    help: "a light's volume ends where it falls to this fraction of its brightest channel (notes 04: 5/256)",
+    kind: Kind::Number {
+        min: 1e-5,
+        max: 0.5,
+        log: true,
+    },
+    get: |r| Value::Number(r.cutoff),
+    set: |r, v| {
+        if let Value::Number(x) = v {
+            r.cutoff = x;
+        }
+    },
+};
+
+pub static STENCIL_VOLUMES: Knob = Knob {
+    key: "render.stencil_volumes",
+    label: "stencil volumes",
+    help: "mark each light's lit pixels with the two-sided stencil test first (notes 05)",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.stencil_volumes),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.stencil_volumes = b;
+        }
+    },
+};
+
+pub static ACCUMULATION: Knob = Knob {
+    key: "render.accumulation",
+    label: "light accumulation",
+    help: "the format lights add up in: rgba16f, or rgba32f for hundreds of lights",
+    kind: Kind::Choice(Accumulation::WORDS),
+    get: |r| Value::Choice(index(Accumulation::ALL, r.accumulation)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.accumulation = Accumulation::ALL[i];
+        }
+    },
+};
+
+pub static AMBIENT: Knob = Knob {
+    key: "render.ambient",
+    label: "ambient",
+    help: "the ambient light, linear RGB (notes 01 §8.3)",
+    kind: Kind::Color,
+    get: |r| Value::Color(r.ambient),
+    set: |r, v| {
+        if let Value::Color(c) = v {
+            r.ambient = c;
+        }
+    },
+};
+
+pub static BACKGROUND: Knob = Knob {
+    key: "render.background",
+    label: "background",
+    help: "the clear colour, linear RGB",
+    kind: Kind::Color,
+    get: |r| Value::Color(r.background),
+    set: |r, v| {
+        if let Value::Color(c) = v {
+            r.background = c;
+        }
+    },
+};
+
+/// Every knob, in the order the panel shows the frame-wide ones.
+pub static ALL: &[&Knob] = &[
+    &PATH,
+    &SHADING,
+    &DEPTH_FUNC,
+    &CUTOFF,
+    &STENCIL_VOLUMES,
+    &ACCUMULATION,
+    &AMBIENT,
+    &BACKGROUND,
+];
+
+fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {
+    all.iter().position(|&x| x == v).unwrap_or(0)
+}

@@ -1,0 +1,8 @@
+//! The demo (src/demo/): its panel, drawn headless with egui_glow over a
+//! rendered frame. The window itself is driven under Xvfb in
+//! tests/window_smoke.rs.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod panel;

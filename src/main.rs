@@ -29,6 +29,9 @@ struct Cli {
     /// Demo: start with the panel hidden (Tab shows it).
     #[arg(long)]
     no_panel: bool,
+    /// Demo: do not time each pass (glFinish after every pass) while the panel is shown.
+    #[arg(long)]
+    no_pass_times: bool,
     /// Demo: exit after this many frames (smoke tests).
     #[arg(long)]
     frames: Option<u32>,
@@ -157,6 +160,7 @@ fn run(cli: Cli) -> Result<()> {
                         size: (1280, 720),
                         overrides: cli.set.clone(),
                         panel: !cli.no_panel,
+                        pass_times: !cli.no_pass_times,
                     },
                 )
             } else {

@@ -31,7 +31,7 @@ impl Demo {
         };
         let camera = self.orbit.camera();
         // Pass times are measured (glFinish after each pass) while the panel shows them.
-        run.renderer.timing = run.panel.open;
+        run.renderer.timing = run.panel.open && run.panel.pass_times;
         run.renderer.render(&camera)?;
 
         // 1. The image: the final frame, or the inspected target.

@@ -55,6 +55,8 @@ pub struct DemoOptions {
     pub overrides: Vec<String>,
     /// Start with the panel shown.
     pub panel: bool,
+    /// Time each pass while the panel is shown.
+    pub pass_times: bool,
 }
 
 /// Open a window on `scene_path` and run until it is closed (or for `options.frames` frames).
@@ -167,6 +169,7 @@ impl Demo {
         let egui = egui_glow::EguiGlow::new(event_loop, ctx.gl.clone(), None, None, true);
         let mut panel = PanelState::new(&self.scene_path.display().to_string());
         panel.open = self.options.panel;
+        panel.pass_times = self.options.pass_times;
         Ok(Running {
             renderer,
             egui,
@@ -267,6 +270,14 @@ impl ApplicationHandler for Demo {
         // Free egui's and the renderer's GL objects, then the context, while
         // the display is open.
         if let Some(run) = self.running.as_mut() {
+            if let Some(ms) = run.panel.timings.median() {
+                println!(
+                    "gloss: {} frames, median {ms:.2} ms/frame ({:.1} fps), panel {}",
+                    run.frames,
+                    1000.0 / ms.max(1e-3),
+                    if run.panel.open { "shown" } else { "hidden" }
+                );
+            }
             run.egui.destroy();
         }
         self.running = None;

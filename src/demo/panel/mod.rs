@@ -56,6 +56,8 @@ pub struct PanelState {
     pub inspect: Option<usize>,
     pub exposure: f32,
     pub timings: Timings,
+    /// Time each pass (glFinish after it) while the panel is shown.
+    pub pass_times: bool,
     path_text: String,
 }
 
@@ -67,6 +69,7 @@ impl PanelState {
             inspect: None,
             exposure: 1.0,
             timings: Timings::default(),
+            pass_times: true,
             path_text: scene_path.to_string(),
         }
     }
@@ -96,7 +99,7 @@ impl PanelState {
                     self.scene_section(ui, input, &mut actions);
                     technique_section(ui, input, &mut actions);
                     self.inspector_section(ui, input, &mut actions);
-                    self.timings.show(ui, input.times);
+                    self.timings.show(ui, input.times, &mut self.pass_times);
                     egui::CollapsingHeader::new("Frame plan")
                         .default_open(false)
                         .show(ui, |ui| {

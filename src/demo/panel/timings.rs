@@ -31,10 +31,13 @@ impl Timings {
         v.get(v.len() / 2).copied()
     }
 
-    pub fn show(&self, ui: &mut egui::Ui, times: &PassTimes) {
+    pub fn show(&self, ui: &mut egui::Ui, times: &PassTimes, pass_times: &mut bool) {
         egui::CollapsingHeader::new("Timings")
             .default_open(true)
             .show(ui, |ui| {
+                ui.checkbox(pass_times, "time each pass").on_hover_text(
+                    "glFinish after each pass: exact pass times, a slightly slower frame",
+                );
                 ui.small("clock: CPU around glFinish after each pass");
                 egui::Grid::new("pass-times").striped(true).show(ui, |ui| {
                     for (name, ms) in &times.passes {

@@ -19,6 +19,7 @@ impl Buffer {
             let id = gl
                 .create_buffer()
                 .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            super::live::made(super::live::Kind::Buffer);
             gl.bind_buffer(target, Some(id));
             gl.buffer_data_size(target, size as i32, usage);
             gl.bind_buffer(target, None);
@@ -44,6 +45,9 @@ impl Buffer {
 
 impl Drop for Buffer {
     fn drop(&mut self) {
-        unsafe { self.gl.delete_buffer(self.id) }
+        unsafe {
+            self.gl.delete_buffer(self.id);
+            super::live::freed(super::live::Kind::Buffer);
+        }
     }
 }

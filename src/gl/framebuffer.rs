@@ -61,6 +61,7 @@ impl Framebuffer {
             let id = gl
                 .create_framebuffer()
                 .map_err(|e| anyhow!("glGenFramebuffers: {e}"))?;
+            super::live::made(super::live::Kind::Framebuffer);
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(id));
             let mut draw = Vec::new();
             for (i, t) in colors.iter().enumerate() {
@@ -179,6 +180,9 @@ pub fn status_name(status: u32) -> &'static str {
 
 impl Drop for Framebuffer {
     fn drop(&mut self) {
-        unsafe { self.gl.delete_framebuffer(self.id) }
+        unsafe {
+            self.gl.delete_framebuffer(self.id);
+            super::live::freed(super::live::Kind::Framebuffer);
+        }
     }
 }

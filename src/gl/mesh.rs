@@ -24,12 +24,15 @@ impl Mesh {
             let vao = gl
                 .create_vertex_array()
                 .map_err(|e| anyhow!("glGenVertexArrays: {e}"))?;
+            super::live::made(super::live::Kind::VertexArray);
             let vbo = gl
                 .create_buffer()
                 .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            super::live::made(super::live::Kind::Buffer);
             let ebo = gl
                 .create_buffer()
                 .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            super::live::made(super::live::Kind::Buffer);
             gl.bind_vertex_array(Some(vao));
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
             gl.buffer_data_u8_slice(
@@ -83,8 +86,11 @@ impl Drop for Mesh {
     fn drop(&mut self) {
         unsafe {
             self.gl.delete_vertex_array(self.vao);
+            super::live::freed(super::live::Kind::VertexArray);
             self.gl.delete_buffer(self.vbo);
+            super::live::freed(super::live::Kind::Buffer);
             self.gl.delete_buffer(self.ebo);
+            super::live::freed(super::live::Kind::Buffer);
         }
     }
 }

@@ -8,6 +8,7 @@ pub mod buffer;
 pub mod debug;
 pub mod egl;
 pub mod framebuffer;
+pub mod live;
 pub mod mesh;
 pub mod osmesa;
 pub mod program;

@@ -183,6 +183,7 @@ impl Program {
             let program = gl
                 .create_program()
                 .map_err(|e| anyhow!("glCreateProgram: {e}"))?;
+            super::live::made(super::live::Kind::Program);
             let mut shaders = Vec::new();
             let result = (|| {
                 for &(kind, file) in stages {
@@ -217,6 +218,7 @@ impl Program {
             }
             if let Err(e) = result {
                 gl.delete_program(program);
+                super::live::freed(super::live::Kind::Program);
                 return Err(e);
             }
             Ok(Program {
@@ -293,7 +295,10 @@ impl Program {
 
 impl Drop for Program {
     fn drop(&mut self) {
-        unsafe { self.gl.delete_program(self.id) }
+        unsafe {
+            self.gl.delete_program(self.id);
+            super::live::freed(super::live::Kind::Program);
+        }
     }
 }
 

@@ -15,6 +15,7 @@ pub struct TimerQuery {
 impl TimerQuery {
     pub fn new(gl: &Gl) -> Result<TimerQuery> {
         let id = unsafe { gl.create_query() }.map_err(|e| anyhow!("glGenQueries: {e}"))?;
+        super::live::made(super::live::Kind::Query);
         Ok(TimerQuery { gl: gl.clone(), id })
     }
 
@@ -36,6 +37,9 @@ impl TimerQuery {
 
 impl Drop for TimerQuery {
     fn drop(&mut self) {
-        unsafe { self.gl.delete_query(self.id) }
+        unsafe {
+            self.gl.delete_query(self.id);
+            super::live::freed(super::live::Kind::Query);
+        }
     }
 }

@@ -55,6 +55,7 @@ impl Texture {
             let id = gl
                 .create_texture()
                 .map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            super::live::made(super::live::Kind::Texture);
             gl.bind_texture(glow::TEXTURE_2D, Some(id));
             gl.tex_image_2d(
                 glow::TEXTURE_2D,
@@ -105,6 +106,7 @@ impl Texture {
             let id = gl
                 .create_texture()
                 .map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            super::live::made(super::live::Kind::Texture);
             gl.bind_texture(glow::TEXTURE_2D, Some(id));
             gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
             gl.tex_image_2d(
@@ -221,6 +223,9 @@ fn upload_format(internal: u32) -> Result<(u32, u32)> {
 
 impl Drop for Texture {
     fn drop(&mut self) {
-        unsafe { self.gl.delete_texture(self.id) }
+        unsafe {
+            self.gl.delete_texture(self.id);
+            super::live::freed(super::live::Kind::Texture);
+        }
     }
 }

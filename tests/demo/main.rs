@@ -6,4 +6,5 @@
 mod common;
 
 mod panel;
+mod robustness;
 mod settings;

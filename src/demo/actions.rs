@@ -19,6 +19,10 @@ impl Demo {
         let result = match action {
             Action::Load(path) => self.load(&assets::scene_path(&path)),
             Action::Reload => self.load(&self.scene_path.clone()),
+            Action::SaveAs(path) => self.scene.save_as(&path).map(|()| {
+                println!("gloss: saved {}", path.display());
+                self.status = Some(format!("saved {}", path.display()));
+            }),
             Action::Settings(s) => match self.running.as_mut() {
                 Some(run) => run.renderer.set_render_settings(s.clone()).map(|()| {
                     self.scene.render = s;

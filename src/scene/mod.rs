@@ -13,6 +13,7 @@ mod file;
 pub mod knobs;
 mod light_grid;
 mod resolve;
+mod save;
 mod settings;
 
 pub use resolve::validate_attenuation;

@@ -259,7 +259,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         }
         let diffuse_texture = match &m.diffuse_texture {
             Some(t) => {
-                let p = base.join(t);
+                let p = relative_to(base, t);
                 if !assets::is_file(&p) {
                     bail!(
                         "{}: file {} does not exist",
@@ -305,7 +305,7 @@ fn objects(
             "cone" => MeshSource::Cone,
             "torus" => MeshSource::Torus,
             file if file.ends_with(".obj") => {
-                let p = base.join(file);
+                let p = relative_to(base, file);
                 if !assets::is_file(&p) {
                     bail!("{}: file {} does not exist", key("mesh"), p.display());
                 }
@@ -394,4 +394,15 @@ pub fn validate_attenuation(kc: f32, kl: f32, kq: f32) -> Result<(), String> {
         );
     }
     Ok(())
+}
+
+/// A path written in a scene file: relative to the file, unless it names a
+/// shipped file (`embedded:scenes/...`, as "save as" writes for a shipped
+/// scene's assets).
+fn relative_to(base: &Path, written: &str) -> std::path::PathBuf {
+    if written.starts_with(assets::EMBEDDED) {
+        std::path::PathBuf::from(written)
+    } else {
+        base.join(written)
+    }
 }

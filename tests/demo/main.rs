@@ -7,4 +7,5 @@ mod common;
 
 mod panel;
 mod robustness;
+mod save;
 mod settings;

@@ -26,6 +26,8 @@ use std::path::PathBuf;
 pub enum Action {
     /// Load a scene file (a path, or the name of a shipped scene).
     Load(PathBuf),
+    /// Write the scene, with the panel's edits, to a file.
+    SaveAs(PathBuf),
     Reload,
     Settings(RenderSettings),
     Lights(usize),
@@ -59,6 +61,7 @@ pub struct PanelState {
     /// Time each pass (glFinish after it) while the panel is shown.
     pub pass_times: bool,
     path_text: String,
+    save_text: String,
 }
 
 impl PanelState {
@@ -71,6 +74,7 @@ impl PanelState {
             timings: Timings::default(),
             pass_times: true,
             path_text: scene_path.to_string(),
+            save_text: "edited.toml".into(),
         }
     }
 
@@ -131,6 +135,12 @@ impl PanelState {
                     ui.text_edit_singleline(&mut self.path_text);
                     if ui.button("open").clicked() {
                         actions.push(Action::Load(PathBuf::from(self.path_text.trim())));
+                    }
+                });
+                ui.horizontal(|ui| {
+                    ui.text_edit_singleline(&mut self.save_text);
+                    if ui.button("save as").clicked() {
+                        actions.push(Action::SaveAs(PathBuf::from(self.save_text.trim())));
                     }
                 });
                 ui.horizontal(|ui| {

@@ -1,0 +1,56 @@
+//! "Save as" (src/scene/save.rs): a scene with the panel's edits, saved and
+//! loaded again, is the same scene and renders the same image, also when
+//! saved away from its assets and when it is a shipped (embedded) scene.
+
+use crate::common;
+use gloss::renderer::{Output, render_scene};
+use gloss::scene::knobs::{self, Value};
+use gloss::scene::{Accumulation, Scene};
+
+#[test]
+fn a_saved_scene_loads_to_the_same_image() {
+    let ctx = common::context(common::backend());
+    let dir = std::env::temp_dir().join("gloss-save-as");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let root = common::root();
+    for (i, path) in [
+        root.join("scenes/default.toml"),
+        root.join("scenes/many-lights.toml"),
+        "embedded:scenes/default.toml".into(),
+    ]
+    .iter()
+    .enumerate()
+    {
+        let mut scene = Scene::load(path).unwrap();
+        // Edits as the panel makes them.
+        let r = &mut scene.render;
+        (knobs::PATH.set)(r, Value::Choice(2));
+        (knobs::CUTOFF.set)(r, Value::Number(0.0123));
+        (knobs::AMBIENT.set)(r, Value::Color(glam::Vec3::new(0.1, 0.05, 0.02)));
+        r.accumulation = Accumulation::Rgba32f;
+        if scene.grid_lights.is_some() {
+            scene.set_light_count(17).unwrap();
+        }
+        let file = dir.join(format!("saved-{i}.toml"));
+        scene.save_as(&file).unwrap();
+        let mut again = Scene::load(&file).unwrap();
+        assert_eq!(again.render, scene.render, "{}", path.display());
+        assert_eq!(again.lights.len(), scene.lights.len());
+        assert_eq!(again.grid_lights, scene.grid_lights);
+        for s in [&mut scene, &mut again] {
+            s.render.size = (96, 54);
+        }
+        let a = render_scene(&ctx, &scene, Output::Srgb8)
+            .unwrap()
+            .read_image();
+        let b = render_scene(&ctx, &again, Output::Srgb8)
+            .unwrap()
+            .read_image();
+        assert!(
+            a.as_raw() == b.as_raw(),
+            "{}: the saved scene renders differently",
+            path.display()
+        );
+    }
+}

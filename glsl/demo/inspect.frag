@@ -4,16 +4,25 @@
 //   0 colour as stored (the output's sRGB bytes, or a linear colour encoded)
 //   1 normal: n * 0.5 + 0.5                2 shininess: alpha / 256
 //   3 HDR light: exposure x value, encoded  4 depth, linearised near..far
+//   5 a count (volumes over a pixel) as a heat map, u_scale the hottest
 #include "common/lighting_output.glsl"
 uniform sampler2D u_texture;
 uniform int u_mode;
 uniform bool u_encode;      // mode 0: the texture holds linear colour
 uniform float u_exposure;
+uniform float u_scale;
 uniform float u_near;
 uniform float u_far;
 uniform bool u_orthographic; // depth is then linear already
 uniform vec2 u_viewport;    // the size drawn into, in pixels
 out vec4 frag_color;
+
+// Black, then blue, green, yellow, red as t goes from 0 to 1.
+vec3 heat(float t) {
+    t = clamp(t, 0.0, 1.0);
+    return clamp(vec3(4.0 * t - 2.0, 2.0 - abs(4.0 * t - 2.0), 2.0 - 4.0 * t), 0.0, 1.0)
+        * min(1.0, 8.0 * t);
+}
 
 void main() {
     vec4 t = texture(u_texture, gl_FragCoord.xy / u_viewport);
@@ -26,6 +35,8 @@ void main() {
         c = vec3(t.a / 256.0);
     } else if (u_mode == 3) {
         c = srgb_encode(t.rgb * u_exposure);
+    } else if (u_mode == 5) {
+        c = heat(t.r / u_scale);
     } else {
         // Window depth d in [0, 1] back to eye distance, then to [0, 1] over near..far.
         float z = t.r * 2.0 - 1.0;

@@ -94,7 +94,9 @@ impl Demo {
                 let Some(run) = self.running.as_ref() else {
                     return;
                 };
-                let n = inspector::views(&run.renderer.plan).len();
+                let n =
+                    inspector::views(&run.renderer.plan, super::frame::has_volumes(&run.renderer))
+                        .len();
                 Action::Inspect(match run.panel.inspect {
                     None if n > 0 => Some(0),
                     Some(i) if i + 1 < n => Some(i + 1),

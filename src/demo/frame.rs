@@ -35,7 +35,7 @@ impl Demo {
         run.renderer.render(&camera)?;
 
         // 1. The image: the final frame, or the inspected target.
-        let views = inspector::views(&run.renderer.plan);
+        let views = inspector::views(&run.renderer.plan, has_volumes(&run.renderer));
         let view = run.panel.inspect.and_then(|i| views.get(i));
         let shown = match view {
             None => run.renderer.output(),
@@ -53,14 +53,24 @@ impl Demo {
                     )?);
                 }
                 let fb = run.inspect_fb.as_ref().expect("made above");
-                run.inspector.draw(
-                    &run.ctx.gl,
-                    v,
-                    run.renderer.targets(),
-                    &camera,
-                    run.panel.exposure,
-                    fb,
-                );
+                match v.volumes {
+                    Some(which) => run.volume_views.draw(
+                        &run.ctx.gl,
+                        which,
+                        &run.renderer,
+                        &camera,
+                        &run.inspector,
+                        fb,
+                    )?,
+                    None => run.inspector.draw(
+                        &run.ctx.gl,
+                        v,
+                        run.renderer.targets(),
+                        &camera,
+                        run.panel.exposure,
+                        fb,
+                    ),
+                }
                 fb
             }
         };
@@ -138,4 +148,12 @@ impl Demo {
             Err(e) => self.message = Some(format!("{e:#}")),
         }
     }
+}
+
+/// Does some light of the frame have a volume (a sphere or a cone)?
+pub(super) fn has_volumes(r: &crate::renderer::Renderer) -> bool {
+    r.lights()
+        .lights
+        .iter()
+        .any(|l| l.volume != crate::frame::lights::Volume::FullScreen)
 }

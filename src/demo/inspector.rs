@@ -4,6 +4,7 @@
 //! glsl/demo/inspect.frag. The list of views comes from the plan, so a
 //! technique's targets appear here as soon as it declares them.
 
+use super::volume_views::VolumeView;
 use crate::frame::plan::FramePlan;
 use crate::frame::targets::{Depth, Targets, format_name};
 use crate::geometry;
@@ -28,6 +29,10 @@ pub enum Mode {
     /// HDR light, scaled by the exposure.
     Light,
     Depth,
+    /// A count, as a heat map from 0 to `scale`.
+    Count {
+        scale: f32,
+    },
 }
 
 /// One view the inspector offers.
@@ -39,17 +44,23 @@ pub struct View {
     pub color_index: Option<usize>,
     pub format: u32,
     pub mode: Mode,
+    /// A view of the light volumes instead of an attachment.
+    pub volumes: Option<VolumeView>,
 }
 
 impl View {
     /// "gbuffer.normal_shininess (RGBA16F)" and what the view shows.
     pub fn label(&self) -> String {
+        if let Some(v) = self.volumes {
+            return v.label().to_string();
+        }
         let shows = match self.mode {
             Mode::Color { .. } => "colour",
             Mode::Normal => "normal x 0.5 + 0.5",
             Mode::Shininess => "shininess / 256",
             Mode::Light => "light x exposure",
             Mode::Depth => "depth, linearised",
+            Mode::Count { .. } => "count, as a heat map",
         };
         format!(
             "{}.{} ({}): {shows}",
@@ -60,8 +71,9 @@ impl View {
     }
 }
 
-/// Every view of a plan's targets, in the plan's order.
-pub fn views(plan: &FramePlan) -> Vec<View> {
+/// Every view of a plan's targets, in the plan's order; then, when some
+/// light has a volume, the three views of the volumes.
+pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
     let mut v = Vec::new();
     for t in &plan.targets {
         for (i, &(name, format)) in t.colors.iter().enumerate() {
@@ -71,6 +83,7 @@ pub fn views(plan: &FramePlan) -> Vec<View> {
                 color_index: Some(i),
                 format,
                 mode,
+                volumes: None,
             };
             match name {
                 "normal_shininess" => {
@@ -93,6 +106,23 @@ pub fn views(plan: &FramePlan) -> Vec<View> {
                 color_index: None,
                 format,
                 mode: Mode::Depth,
+                volumes: None,
+            });
+        }
+    }
+    if has_volumes {
+        for which in [
+            VolumeView::Wireframe,
+            VolumeView::Debug,
+            VolumeView::Overdraw,
+        ] {
+            v.push(View {
+                target: "light volumes",
+                attachment: which.label(),
+                color_index: None,
+                format: 0,
+                mode: Mode::Color { encode: false },
+                volumes: Some(which),
             });
         }
     }
@@ -120,9 +150,8 @@ impl Inspector {
         })
     }
 
-    /// Draw `view` into `into` (its own framebuffer, never one of the
-    /// renderer's targets), full size.
-    #[allow(clippy::too_many_arguments)]
+    /// Draw `view` (an attachment) into `into` (its own framebuffer, never
+    /// one of the renderer's targets), full size.
     pub fn draw(
         &self,
         gl: &glow::Context,
@@ -139,13 +168,27 @@ impl Inspector {
             Some(i) => fb.colors.get(i).map(|t| t.id),
             None => fb.depth_stencil.as_ref().map(|t| t.id),
         };
+        self.draw_texture(gl, texture, view.mode, camera, exposure, into);
+    }
+
+    /// Draw `texture` made visible by `mode` into `into`, full size.
+    pub fn draw_texture(
+        &self,
+        gl: &glow::Context,
+        texture: Option<glow::Texture>,
+        mode: Mode,
+        camera: &Camera,
+        exposure: f32,
+        into: &Framebuffer,
+    ) {
         let p = &self.program;
-        let (mode, encode) = match view.mode {
-            Mode::Color { encode } => (0, encode),
-            Mode::Normal => (1, false),
-            Mode::Shininess => (2, false),
-            Mode::Light => (3, false),
-            Mode::Depth => (4, false),
+        let (index, encode, scale) = match mode {
+            Mode::Color { encode } => (0, encode, 1.0),
+            Mode::Normal => (1, false, 1.0),
+            Mode::Shininess => (2, false, 1.0),
+            Mode::Light => (3, false, 1.0),
+            Mode::Depth => (4, false, 1.0),
+            Mode::Count { scale } => (5, false, scale),
         };
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(into.id));
@@ -155,9 +198,10 @@ impl Inspector {
             gl.active_texture(glow::TEXTURE0);
             gl.bind_texture(glow::TEXTURE_2D, texture);
             p.set_i32("u_texture", 0);
-            p.set_i32("u_mode", mode);
+            p.set_i32("u_mode", index);
             p.set_bool("u_encode", encode);
             p.set_f32("u_exposure", exposure);
+            p.set_f32("u_scale", scale);
             p.set_f32("u_near", camera.near);
             p.set_f32("u_far", camera.far);
             p.set_bool(

@@ -22,6 +22,7 @@ mod present;
 pub use present::restore_after_egui;
 mod screenshot;
 mod shaders;
+pub mod volume_views;
 
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Sources;
@@ -117,6 +118,7 @@ struct Running {
     egui: egui_glow::EguiGlow,
     panel: PanelState,
     inspector: Inspector,
+    volume_views: volume_views::VolumeViews,
     /// What the inspector draws into (never one of the renderer's targets).
     inspect_fb: Option<Framebuffer>,
     ctx: WindowContext,
@@ -175,6 +177,7 @@ impl Demo {
             egui,
             panel,
             inspector: Inspector::new(&ctx.gl, &self.sources)?,
+            volume_views: volume_views::VolumeViews::new(&ctx.gl, &self.sources)?,
             inspect_fb: None,
             ctx,
             frames: 0,

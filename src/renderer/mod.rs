@@ -166,6 +166,16 @@ impl Renderer {
         &self.targets
     }
 
+    /// Each light's radius and volume (the demo's light-volume views).
+    pub fn lights(&self) -> &FrameLights {
+        &self.lights
+    }
+
+    /// The full-screen triangle and the volume meshes.
+    pub fn meshes(&self) -> &FrameMeshes {
+        &self.meshes
+    }
+
     /// Write the scene's lights into the uniform buffer.
     fn upload_lights(&mut self) {
         let bytes = self.lights.pack(&self.scene);

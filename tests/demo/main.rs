@@ -9,3 +9,4 @@ mod panel;
 mod robustness;
 mod save;
 mod settings;
+mod volumes;

@@ -1,0 +1,60 @@
+//! src/demo/volume_views.rs: the overdraw view counts, per pixel, the light
+//! volumes that cover it: at least one at each point light's own position,
+//! never more than there are volumes, and the wireframe and debug views
+//! draw without GL errors.
+
+use crate::common;
+use gloss::demo::inspector::Inspector;
+use gloss::demo::volume_views::{VolumeView, VolumeViews};
+use gloss::gl::framebuffer::Framebuffer;
+use gloss::gl::program::Sources;
+use gloss::renderer::Renderer;
+use gloss::scene::{LightKind, RenderPath};
+
+#[test]
+fn overdraw_counts_the_volumes_over_each_pixel() {
+    let ctx = common::context(common::backend());
+    let gl = &ctx.gl;
+    let mut scene = common::scene("mixed-lights.toml");
+    scene.render.path = RenderPath::Volumes;
+    let (w, h) = (192, 108);
+    let mut r = Renderer::new(gl, &ctx.debug, &scene, &Sources::Embedded, w, h).unwrap();
+    r.render(&scene.camera).unwrap();
+    let inspector = Inspector::new(gl, &Sources::Embedded).unwrap();
+    let mut views = VolumeViews::new(gl, &Sources::Embedded).unwrap();
+    let into = Framebuffer::new(gl, "into", w, h, &[glow::RGBA8], None).unwrap();
+    for v in [
+        VolumeView::Wireframe,
+        VolumeView::Debug,
+        VolumeView::Overdraw,
+    ] {
+        views
+            .draw(gl, v, &r, &scene.camera, &inspector, &into)
+            .unwrap();
+        ctx.debug.check(gl, v.label()).unwrap();
+    }
+    let count = views.count().unwrap().read_rgba_f32(0);
+    let volumes = scene
+        .lights
+        .iter()
+        .filter(|l| l.kind != LightKind::Directional)
+        .count() as f32;
+    let max = count.chunks(4).map(|p| p[0]).fold(0.0, f32::max);
+    assert!(
+        max >= 1.0 && max <= volumes,
+        "largest count {max}, {volumes} volumes"
+    );
+    let vp = r.frame_uniforms(&scene.camera).view_projection;
+    for l in scene.lights.iter().filter(|l| l.kind == LightKind::Point) {
+        let ndc = vp.project_point3(l.position);
+        let (x, y) = (
+            ((ndc.x * 0.5 + 0.5) * w as f32) as usize,
+            ((ndc.y * 0.5 + 0.5) * h as f32) as usize,
+        );
+        let c = count[(y * w as usize + x) * 4];
+        assert!(
+            c >= 1.0,
+            "a point light's own pixel ({x}, {y}) is in its volume: count {c}"
+        );
+    }
+}

@@ -64,12 +64,19 @@ impl Demo {
     pub(super) fn key(&mut self, key: KeyAction) {
         let mut settings = self.scene.render.clone();
         let action = match key {
-            KeyAction::TogglePanel | KeyAction::Help => {
+            KeyAction::TogglePanel | KeyAction::Help | KeyAction::Fly => {
                 if let Some(run) = self.running.as_mut() {
-                    if key == KeyAction::Help {
-                        run.panel.help = !run.panel.help;
-                    } else {
-                        run.panel.open = !run.panel.open;
+                    match key {
+                        KeyAction::Help => run.panel.help = !run.panel.help,
+                        KeyAction::Fly => {
+                            run.fly = !run.fly;
+                            run.held.clear();
+                            self.status = Some(format!(
+                                "fly mode {}",
+                                if run.fly { "on (W A S D Q E)" } else { "off" }
+                            ));
+                        }
+                        _ => run.panel.open = !run.panel.open,
                     }
                 }
                 return;

@@ -29,6 +29,16 @@ impl Demo {
         let Some(run) = self.running.as_mut() else {
             return Ok(false);
         };
+        if run.fly {
+            let held = |c| if run.held.contains(&c) { 1.0 } else { 0.0 };
+            let seconds = run.last_swap.elapsed().as_secs_f32();
+            self.orbit.fly(
+                held('w') - held('s'),
+                held('d') - held('a'),
+                held('e') - held('q'),
+                seconds,
+            );
+        }
         let camera = self.orbit.camera();
         // Pass times are measured (glFinish after each pass) while the panel shows them.
         run.renderer.timing = run.panel.open && run.panel.pass_times;

@@ -17,7 +17,12 @@ pub const KEYS: &[(&str, &str)] = &[
     ("V", "stencil light volumes on or off"),
     ("I", "next pass-inspector view"),
     ("R", "reset the camera to the scene's"),
-    ("drag, wheel", "orbit, zoom"),
+    (
+        "F",
+        "fly mode on or off: drag turns the view, W A S D move, Q E down and up",
+    ),
+    ("left drag, wheel", "orbit, zoom"),
+    ("right or middle drag", "pan"),
     ("Esc", "quit"),
 ];
 
@@ -34,6 +39,7 @@ pub enum KeyAction {
     ToggleStencil,
     NextView,
     ResetCamera,
+    Fly,
     Quit,
 }
 
@@ -56,6 +62,7 @@ pub fn action(key: &winit::keyboard::Key, shift: bool) -> Option<KeyAction> {
             "v" => KeyAction::ToggleStencil,
             "i" => KeyAction::NextView,
             "r" => KeyAction::ResetCamera,
+            "f" => KeyAction::Fly,
             _ => return None,
         },
         _ => return None,

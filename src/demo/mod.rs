@@ -124,6 +124,12 @@ struct Running {
     ctx: WindowContext,
     frames: u32,
     left_down: bool,
+    /// Right or middle button held: pan.
+    pan_down: bool,
+    /// Fly mode (F): the drag turns the view, W A S D Q E move.
+    fly: bool,
+    /// The fly-mode keys held down.
+    held: std::collections::HashSet<char>,
     cursor: Option<PhysicalPosition<f64>>,
     title: TitleClock,
     last_swap: Instant,
@@ -182,6 +188,9 @@ impl Demo {
             ctx,
             frames: 0,
             left_down: false,
+            pan_down: false,
+            fly: false,
+            held: Default::default(),
             cursor: None,
             title: TitleClock::new(),
             last_swap: Instant::now(),
@@ -214,6 +223,16 @@ impl Demo {
             }
             WindowEvent::ModifiersChanged(m) => run.modifiers = m.state(),
             _ if to_egui.consumed => {}
+            WindowEvent::KeyboardInput { event, .. }
+                if fly_key(&event.logical_key).is_some() && run.fly =>
+            {
+                let k = fly_key(&event.logical_key).expect("checked");
+                if event.state == ElementState::Pressed {
+                    run.held.insert(k);
+                } else {
+                    run.held.remove(&k);
+                }
+            }
             WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
                 if let Some(a) = keys::action(&event.logical_key, run.modifiers.shift_key()) {
                     if a == keys::KeyAction::Quit {
@@ -228,10 +247,20 @@ impl Demo {
                 state,
                 ..
             } => run.left_down = state == ElementState::Pressed,
+            WindowEvent::MouseInput {
+                button: MouseButton::Right | MouseButton::Middle,
+                state,
+                ..
+            } => run.pan_down = state == ElementState::Pressed,
             WindowEvent::CursorMoved { position, .. } => {
-                if let (true, Some(last)) = (run.left_down, run.cursor) {
-                    self.orbit
-                        .rotate((position.x - last.x) as f32, (position.y - last.y) as f32);
+                if let Some(last) = run.cursor {
+                    let (dx, dy) = ((position.x - last.x) as f32, (position.y - last.y) as f32);
+                    match (run.left_down, run.pan_down, run.fly) {
+                        (true, _, false) => self.orbit.rotate(dx, dy),
+                        (true, _, true) => self.orbit.look(dx, dy),
+                        (false, true, _) => self.orbit.pan(dx, dy),
+                        _ => {}
+                    }
                 }
                 run.cursor = Some(position);
             }
@@ -284,6 +313,17 @@ impl ApplicationHandler for Demo {
             run.egui.destroy();
         }
         self.running = None;
+    }
+}
+
+/// W A S D Q E, the fly-mode keys.
+fn fly_key(key: &winit::keyboard::Key) -> Option<char> {
+    match key {
+        winit::keyboard::Key::Character(c) => {
+            let c = c.to_lowercase().chars().next()?;
+            "wasdqe".contains(c).then_some(c)
+        }
+        _ => None,
     }
 }
 

@@ -1,5 +1,6 @@
-//! The demo's camera control: left-drag orbits around the scene camera's
-//! target, the wheel zooms.
+//! The demo's camera control: left-drag orbits around the target, right- or
+//! middle-drag pans, the wheel zooms; in fly mode the drag turns the view
+//! about the eye and W A S D (Q E) move it.
 
 use crate::scene::{Camera, Projection};
 use glam::{Quat, Vec3};
@@ -15,6 +16,8 @@ pub(super) struct Orbit {
     direction: Vec3,
     distance: f32,
     base_distance: f32,
+    /// The point orbited (the scene camera's target until panned or flown).
+    target: Vec3,
 }
 
 /// Radians per pixel of mouse drag.
@@ -37,7 +40,47 @@ impl Orbit {
             direction,
             distance,
             base_distance: distance,
+            target: camera.target,
         }
+    }
+
+    fn eye(&self) -> Vec3 {
+        self.target + self.direction * self.distance
+    }
+
+    /// The camera's right and up on screen.
+    fn screen_axes(&self) -> (Vec3, Vec3) {
+        let right = self
+            .up
+            .cross(self.direction)
+            .normalize_or(self.up.any_orthonormal_vector());
+        (right, self.direction.cross(right))
+    }
+
+    /// Drag by (dx, dy) pixels with the right or middle button: move the
+    /// target (and the eye with it) across the screen.
+    pub(super) fn pan(&mut self, dx: f32, dy: f32) {
+        if !(dx.is_finite() && dy.is_finite()) {
+            return;
+        }
+        let (right, up) = self.screen_axes();
+        let k = self.distance * 0.0015;
+        self.target += (-right * dx + up * dy) * k;
+    }
+
+    /// Fly mode's drag: turn the view about the eye, which stays put.
+    pub(super) fn look(&mut self, dx: f32, dy: f32) {
+        let eye = self.eye();
+        self.rotate(-dx, -dy);
+        self.target = eye - self.direction * self.distance;
+    }
+
+    /// Fly mode's keys: move `forward`, `right` and `up` (each -1, 0 or 1)
+    /// for `seconds`, at half the scene camera's distance per second.
+    pub(super) fn fly(&mut self, forward: f32, right: f32, up: f32, seconds: f32) {
+        let (r, _) = self.screen_axes();
+        let step = self.base_distance * 0.5 * seconds.clamp(0.0, 0.25);
+        self.target += (-self.direction * forward + r * right + self.up * up) * step;
     }
 
     /// Drag by (dx, dy) pixels: dx turns around `up`, dy tilts toward or away from it.
@@ -73,7 +116,8 @@ impl Orbit {
     pub(super) fn camera(&self) -> Camera {
         let mut c = self.base.clone();
         let scale = self.distance / self.base_distance;
-        c.eye = c.target + self.direction * self.distance;
+        c.target = self.target;
+        c.eye = self.eye();
         c.up = self.up;
         if let Projection::Orthographic { half_height } = c.projection {
             c.projection = Projection::Orthographic {
@@ -141,5 +185,38 @@ mod tests {
         o.rotate(10.0, 10.0);
         o.zoom(3.0);
         assert!(o.camera().eye.is_finite());
+    }
+
+    #[test]
+    fn pan_moves_eye_and_target_together() {
+        let mut o = Orbit::new(&camera());
+        let before = o.camera();
+        o.pan(30.0, -20.0);
+        let after = o.camera();
+        let moved = after.target - before.target;
+        assert!(moved.length() > 1e-3);
+        assert!((after.eye - before.eye - moved).length() < 1e-5);
+        // Across the screen: perpendicular to the view.
+        assert!(moved.dot(before.target - before.eye).abs() < 1e-4);
+    }
+
+    #[test]
+    fn fly_look_keeps_the_eye_and_fly_moves_along_the_view() {
+        let mut o = Orbit::new(&camera());
+        let eye = o.camera().eye;
+        o.look(40.0, 15.0);
+        let c = o.camera();
+        assert!(
+            (c.eye - eye).length() < 1e-4,
+            "looking around keeps the eye"
+        );
+        let view = (c.target - c.eye).normalize();
+        o.fly(1.0, 0.0, 0.0, 0.1);
+        let moved = o.camera().eye - c.eye;
+        assert!(moved.length() > 1e-4);
+        assert!(
+            (moved.normalize() - view).length() < 1e-4,
+            "W moves where the camera looks"
+        );
     }
 }

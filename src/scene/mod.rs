@@ -12,11 +12,12 @@
 mod file;
 pub mod knobs;
 mod light_grid;
+mod lights;
 mod resolve;
 mod save;
 mod settings;
 
-pub use resolve::validate_attenuation;
+pub use lights::validate_attenuation;
 pub use settings::{Accumulation, DepthFunc, RenderPath, Shading};
 
 use crate::assets;

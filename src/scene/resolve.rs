@@ -4,10 +4,7 @@
 //! One function per section of the file, in the order they are checked.
 
 use super::file::SceneFile;
-use super::light_grid::generate_lights;
-use super::{
-    Camera, Light, LightKind, Material, MeshSource, Object, Projection, RenderSettings, Scene,
-};
+use super::{Camera, Material, MeshSource, Object, Projection, RenderSettings, Scene};
 use crate::assets;
 use crate::math;
 use anyhow::{Result, anyhow, bail};
@@ -15,14 +12,14 @@ use glam::Vec3;
 use std::collections::HashMap;
 use std::path::Path;
 
-fn finite(key: &str, v: &[f32]) -> Result<()> {
+pub(super) fn finite(key: &str, v: &[f32]) -> Result<()> {
     if v.iter().any(|x| !x.is_finite()) {
         bail!("{key}: expected finite numbers, found {v:?}");
     }
     Ok(())
 }
 
-fn non_negative(key: &str, v: &[f32]) -> Result<()> {
+pub(super) fn non_negative(key: &str, v: &[f32]) -> Result<()> {
     finite(key, v)?;
     if v.iter().any(|x| *x < 0.0) {
         bail!("{key}: expected values >= 0, found {v:?}");
@@ -41,7 +38,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
 
     let camera = camera(&f)?;
     let render = render_settings(&f)?;
-    let lights = lights(&f)?;
+    let lights = super::lights::lights(&f)?;
     let (materials, material_index) = materials(&f, base)?;
     let objects = objects(&f, &material_index, base)?;
 
@@ -154,82 +151,6 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         stencil_volumes: r.stencil_volumes,
         accumulation: r.accumulation,
     })
-}
-
-/// Lights: the `[[lights]]` list, then the generated `[light_grid]` ones.
-fn lights(f: &SceneFile) -> Result<Vec<Light>> {
-    let mut lights = Vec::new();
-    for (i, l) in f.lights.iter().enumerate() {
-        let key = |k: &str| format!("lights[{i}].{k}");
-        non_negative(&key("color"), &l.color)?;
-        non_negative(&key("intensity"), &[l.intensity])?;
-        let [kc, kl, kq] = l.attenuation;
-        validate_attenuation(kc, kl, kq).map_err(|e| anyhow!("{}: {e}", key("attenuation")))?;
-        let kind = match l.kind.as_str() {
-            "directional" => LightKind::Directional,
-            "point" => LightKind::Point,
-            "spot" => LightKind::Spot,
-            other => bail!(
-                "{}: expected directional, point or spot, found \"{other}\"",
-                key("type")
-            ),
-        };
-        let position = match (kind, l.position) {
-            (LightKind::Directional, _) => Vec3::ZERO,
-            (_, Some(p)) => {
-                finite(&key("position"), &p)?;
-                Vec3::from(p)
-            }
-            (_, None) => bail!("{}: required for a {} light", key("position"), l.kind),
-        };
-        let direction = match (kind, l.direction) {
-            (LightKind::Point, _) => Vec3::NEG_Y,
-            (_, Some(d)) => {
-                finite(&key("direction"), &d)?;
-                let d = Vec3::from(d);
-                if d.length() < 1e-6 {
-                    bail!("{}: must not be zero", key("direction"));
-                }
-                d.normalize()
-            }
-            (_, None) => bail!("{}: required for a {} light", key("direction"), l.kind),
-        };
-        if kind == LightKind::Spot
-            && !(l.inner_angle >= 0.0 && l.inner_angle <= l.outer_angle && l.outer_angle < 89.0)
-        {
-            bail!(
-                "{}: expected 0 <= inner_angle <= outer_angle < 89 degrees, found {} and {}",
-                key("inner_angle/outer_angle"),
-                l.inner_angle,
-                l.outer_angle
-            );
-        }
-        lights.push(Light {
-            kind,
-            position,
-            direction,
-            color: Vec3::from(l.color),
-            intensity: l.intensity,
-            kc,
-            kl,
-            kq,
-            inner_angle: l.inner_angle,
-            outer_angle: l.outer_angle,
-            shadow: l.shadow,
-        });
-    }
-    if let Some(g) = &f.light_grid {
-        finite("light_grid.area", &g.area)?;
-        finite("light_grid.height", &g.height)?;
-        non_negative("light_grid.intensity", &[g.intensity])?;
-        let [kc, kl, kq] = g.attenuation;
-        validate_attenuation(kc, kl, kq).map_err(|e| anyhow!("light_grid.attenuation: {e}"))?;
-        if g.count > 100_000 {
-            bail!("light_grid.count: at most 100000 lights, found {}", g.count);
-        }
-        lights.extend(generate_lights(g));
-    }
-    Ok(lights)
 }
 
 /// Materials (sorted by name so indices are stable); also returns the index
@@ -365,35 +286,6 @@ fn objects(
         });
     }
     Ok(objects)
-}
-
-/// Checks attenuation coefficients as the scene loader must before any light
-/// uses them: every coefficient finite and non-negative, and not all zero
-/// (which would make the attenuation infinite everywhere).
-pub fn validate_attenuation(kc: f32, kl: f32, kq: f32) -> Result<(), String> {
-    for (name, v) in [
-        ("Kc (constant)", kc),
-        ("Kl (linear)", kl),
-        ("Kq (quadratic)", kq),
-    ] {
-        if !v.is_finite() {
-            return Err(format!(
-                "attenuation coefficient {name} must be a finite number, got {v}"
-            ));
-        }
-        if v < 0.0 {
-            return Err(format!(
-                "attenuation coefficient {name} must be >= 0, got {v}"
-            ));
-        }
-    }
-    if kc == 0.0 && kl == 0.0 && kq == 0.0 {
-        return Err(
-            "attenuation coefficients Kc, Kl and Kq are all 0: the light would be infinitely bright"
-                .to_string(),
-        );
-    }
-    Ok(())
 }
 
 /// A path written in a scene file: relative to the file, unless it names a

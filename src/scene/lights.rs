@@ -1,0 +1,115 @@
+//! The lights of a scene file: the `[[lights]]` list, each checked, then
+//! the lights a `[light_grid]` generates; and the attenuation check every
+//! light's Kc, Kl, Kq pass (notes 04's model).
+
+use super::file::SceneFile;
+use super::light_grid::generate_lights;
+use super::resolve::{finite, non_negative};
+use super::{Light, LightKind};
+use anyhow::{Result, anyhow, bail};
+use glam::Vec3;
+
+/// Lights: the `[[lights]]` list, then the generated `[light_grid]` ones.
+pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
+    let mut lights = Vec::new();
+    for (i, l) in f.lights.iter().enumerate() {
+        let key = |k: &str| format!("lights[{i}].{k}");
+        non_negative(&key("color"), &l.color)?;
+        non_negative(&key("intensity"), &[l.intensity])?;
+        let [kc, kl, kq] = l.attenuation;
+        validate_attenuation(kc, kl, kq).map_err(|e| anyhow!("{}: {e}", key("attenuation")))?;
+        let kind = match l.kind.as_str() {
+            "directional" => LightKind::Directional,
+            "point" => LightKind::Point,
+            "spot" => LightKind::Spot,
+            other => bail!(
+                "{}: expected directional, point or spot, found \"{other}\"",
+                key("type")
+            ),
+        };
+        let position = match (kind, l.position) {
+            (LightKind::Directional, _) => Vec3::ZERO,
+            (_, Some(p)) => {
+                finite(&key("position"), &p)?;
+                Vec3::from(p)
+            }
+            (_, None) => bail!("{}: required for a {} light", key("position"), l.kind),
+        };
+        let direction = match (kind, l.direction) {
+            (LightKind::Point, _) => Vec3::NEG_Y,
+            (_, Some(d)) => {
+                finite(&key("direction"), &d)?;
+                let d = Vec3::from(d);
+                if d.length() < 1e-6 {
+                    bail!("{}: must not be zero", key("direction"));
+                }
+                d.normalize()
+            }
+            (_, None) => bail!("{}: required for a {} light", key("direction"), l.kind),
+        };
+        if kind == LightKind::Spot
+            && !(l.inner_angle >= 0.0 && l.inner_angle <= l.outer_angle && l.outer_angle < 89.0)
+        {
+            bail!(
+                "{}: expected 0 <= inner_angle <= outer_angle < 89 degrees, found {} and {}",
+                key("inner_angle/outer_angle"),
+                l.inner_angle,
+                l.outer_angle
+            );
+        }
+        lights.push(Light {
+            kind,
+            position,
+            direction,
+            color: Vec3::from(l.color),
+            intensity: l.intensity,
+            kc,
+            kl,
+            kq,
+            inner_angle: l.inner_angle,
+            outer_angle: l.outer_angle,
+            shadow: l.shadow,
+        });
+    }
+    if let Some(g) = &f.light_grid {
+        finite("light_grid.area", &g.area)?;
+        finite("light_grid.height", &g.height)?;
+        non_negative("light_grid.intensity", &[g.intensity])?;
+        let [kc, kl, kq] = g.attenuation;
+        validate_attenuation(kc, kl, kq).map_err(|e| anyhow!("light_grid.attenuation: {e}"))?;
+        if g.count > 100_000 {
+            bail!("light_grid.count: at most 100000 lights, found {}", g.count);
+        }
+        lights.extend(generate_lights(g));
+    }
+    Ok(lights)
+}
+
+/// Checks attenuation coefficients as the scene loader must before any light
+/// uses them: every coefficient finite and non-negative, and not all zero
+/// (which would make the attenuation infinite everywhere).
+pub fn validate_attenuation(kc: f32, kl: f32, kq: f32) -> Result<(), String> {
+    for (name, v) in [
+        ("Kc (constant)", kc),
+        ("Kl (linear)", kl),
+        ("Kq (quadratic)", kq),
+    ] {
+        if !v.is_finite() {
+            return Err(format!(
+                "attenuation coefficient {name} must be a finite number, got {v}"
+            ));
+        }
+        if v < 0.0 {
+            return Err(format!(
+                "attenuation coefficient {name} must be >= 0, got {v}"
+            ));
+        }
+    }
+    if kc == 0.0 && kl == 0.0 && kq == 0.0 {
+        return Err(
+            "attenuation coefficients Kc, Kl and Kq are all 0: the light would be infinitely bright"
+                .to_string(),
+        );
+    }
+    Ok(())
+}

@@ -6,7 +6,7 @@
 use super::keys::KeyAction;
 use super::panel::Action;
 use super::shaders::shader_names;
-use super::{Demo, inspector, modified, to_i32};
+use super::{Demo, compare, modified, to_i32};
 use crate::assets;
 use crate::renderer::Renderer;
 use crate::scene::{RenderPath, Scene, Shading};
@@ -16,6 +16,14 @@ use std::time::{Duration, Instant};
 
 impl Demo {
     pub(super) fn apply(&mut self, action: Action) {
+        // A comparison holds while the frame it compared stays the same.
+        if matches!(
+            action,
+            Action::Load(_) | Action::Reload | Action::Settings(_) | Action::Lights(_)
+        ) && let Some(run) = self.running.as_mut()
+        {
+            run.comparison = None;
+        }
         let result = match action {
             Action::Load(path) => self.load(&assets::scene_path(&path)),
             Action::Reload => self.load(&self.scene_path.clone()),
@@ -47,6 +55,20 @@ impl Demo {
                 }
                 Ok(())
             }
+            Action::Compare => match self.running.as_mut() {
+                Some(run) => compare::compare(
+                    &run.ctx.gl,
+                    &run.ctx.debug,
+                    &self.sources,
+                    &run.renderer,
+                    &self.orbit.camera(),
+                )
+                .map(|c| {
+                    self.status = Some(format!("{}: {}", c.what, c.metrics));
+                    run.comparison = Some(c);
+                }),
+                None => Ok(()),
+            },
             Action::ResetCamera => {
                 self.orbit = super::Orbit::new(&self.scene.camera);
                 Ok(())
@@ -101,9 +123,7 @@ impl Demo {
                 let Some(run) = self.running.as_ref() else {
                     return;
                 };
-                let n =
-                    inspector::views(&run.renderer.plan, super::frame::has_volumes(&run.renderer))
-                        .len();
+                let n = super::frame::all_views(run).len();
                 Action::Inspect(match run.panel.inspect {
                     None if n > 0 => Some(0),
                     Some(i) if i + 1 < n => Some(i + 1),

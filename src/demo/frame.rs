@@ -45,7 +45,7 @@ impl Demo {
         run.renderer.render(&camera)?;
 
         // 1. The image: the final frame, or the inspected target.
-        let views = inspector::views(&run.renderer.plan, has_volumes(&run.renderer));
+        let views = all_views(run);
         let view = run.panel.inspect.and_then(|i| views.get(i));
         let shown = match view {
             None => run.renderer.output(),
@@ -63,8 +63,16 @@ impl Demo {
                     )?);
                 }
                 let fb = run.inspect_fb.as_ref().expect("made above");
-                match v.volumes {
-                    Some(which) => run.volume_views.draw(
+                match (v.volumes, &run.comparison) {
+                    (_, Some(c)) if v.difference => run.inspector.draw_texture(
+                        &run.ctx.gl,
+                        Some(c.difference.id),
+                        inspector::Mode::Color { encode: false },
+                        &camera,
+                        1.0,
+                        fb,
+                    ),
+                    (Some(which), _) => run.volume_views.draw(
                         &run.ctx.gl,
                         which,
                         &run.renderer,
@@ -72,7 +80,7 @@ impl Demo {
                         &run.inspector,
                         fb,
                     )?,
-                    None => run.inspector.draw(
+                    _ => run.inspector.draw(
                         &run.ctx.gl,
                         v,
                         run.renderer.targets(),
@@ -101,6 +109,10 @@ impl Demo {
             run.ctx.info.renderer, run.ctx.info.major, run.ctx.info.minor
         );
         let scene_path = self.scene_path.display().to_string();
+        let comparison = run
+            .comparison
+            .as_ref()
+            .map(|c| format!("{}: {}", c.what, c.metrics));
         let input = PanelInput {
             scene: &self.scene,
             scene_path: &scene_path,
@@ -110,6 +122,7 @@ impl Demo {
             views: &views,
             error: self.message.as_deref(),
             status: self.status.as_deref(),
+            comparison: comparison.as_deref(),
             gl_info: &gl_info,
         };
         let mut actions = Vec::new();
@@ -158,6 +171,24 @@ impl Demo {
             Err(e) => self.message = Some(format!("{e:#}")),
         }
     }
+}
+
+/// The inspector's views: the plan's targets, the light volumes, and the
+/// difference image of the last comparison.
+pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
+    let mut views = inspector::views(&run.renderer.plan, has_volumes(&run.renderer));
+    if run.comparison.is_some()
+        && let Some(first) = views.first().cloned()
+    {
+        views.push(inspector::View {
+            target: "comparison",
+            attachment: "difference",
+            difference: true,
+            volumes: None,
+            ..first
+        });
+    }
+    views
 }
 
 /// Does some light of the frame have a volume (a sphere or a cone)?

@@ -46,6 +46,8 @@ pub struct View {
     pub mode: Mode,
     /// A view of the light volumes instead of an attachment.
     pub volumes: Option<VolumeView>,
+    /// The difference image of "compare with reference" instead of an attachment.
+    pub difference: bool,
 }
 
 impl View {
@@ -53,6 +55,9 @@ impl View {
     pub fn label(&self) -> String {
         if let Some(v) = self.volumes {
             return v.label().to_string();
+        }
+        if self.difference {
+            return "difference to the forward reference, x8".to_string();
         }
         let shows = match self.mode {
             Mode::Color { .. } => "colour",
@@ -84,6 +89,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 format,
                 mode,
                 volumes: None,
+                difference: false,
             };
             match name {
                 "normal_shininess" => {
@@ -107,6 +113,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 format,
                 mode: Mode::Depth,
                 volumes: None,
+                difference: false,
             });
         }
     }
@@ -123,6 +130,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 format: 0,
                 mode: Mode::Color { encode: false },
                 volumes: Some(which),
+                difference: false,
             });
         }
     }

@@ -12,6 +12,7 @@
 
 mod actions;
 mod clock;
+pub mod compare;
 mod frame;
 pub mod inspector;
 mod keys;
@@ -119,6 +120,8 @@ struct Running {
     panel: PanelState,
     inspector: Inspector,
     volume_views: volume_views::VolumeViews,
+    /// The last "compare with reference", until the settings or scene change.
+    comparison: Option<compare::Comparison>,
     /// What the inspector draws into (never one of the renderer's targets).
     inspect_fb: Option<Framebuffer>,
     ctx: WindowContext,
@@ -184,6 +187,7 @@ impl Demo {
             panel,
             inspector: Inspector::new(&ctx.gl, &self.sources)?,
             volume_views: volume_views::VolumeViews::new(&ctx.gl, &self.sources)?,
+            comparison: None,
             inspect_fb: None,
             ctx,
             frames: 0,

@@ -45,6 +45,7 @@ fn the_panel_is_drawn_and_leaves_the_scene_and_the_gl_state_as_they_were() {
         views: &views,
         error: None,
         status: None,
+        comparison: Some("volumes against forward, 640x400: RMSE 0.1/255"),
         gl_info: "headless test",
     };
     let raw = egui::RawInput {

@@ -36,6 +36,8 @@ pub enum Action {
     /// A screenshot; `true`: with the panel.
     Screenshot(bool),
     ResetCamera,
+    /// Compare the frame with the forward reference.
+    Compare,
 }
 
 /// What the panel shows.
@@ -48,6 +50,8 @@ pub struct PanelInput<'a> {
     pub views: &'a [View],
     pub error: Option<&'a str>,
     pub status: Option<&'a str>,
+    /// The last comparison with the forward reference, in words.
+    pub comparison: Option<&'a str>,
     pub gl_info: &'a str,
 }
 
@@ -198,6 +202,16 @@ impl PanelState {
                         .logarithmic(true)
                         .text("exposure (light views)"),
                 );
+                ui.horizontal(|ui| {
+                    if ui.button("compare with reference").on_hover_text(
+                        "render forward with the same camera and size; show RMSE, max and the difference (a view above)",
+                    ).clicked() {
+                        actions.push(Action::Compare);
+                    }
+                });
+                if let Some(c) = input.comparison {
+                    ui.label(c);
+                }
                 if let Some(v) = current.and_then(|i| input.views.get(i)) {
                     let fb = input
                         .plan

@@ -9,8 +9,8 @@ use super::shaders::shader_names;
 use super::{Demo, compare, modified, to_i32};
 use crate::assets;
 use crate::renderer::Renderer;
-use crate::scene::{RenderPath, Scene, Shading};
-use anyhow::Result;
+use crate::scene::{Light, RenderPath, Scene, Shading, validate_attenuation};
+use anyhow::{Result, anyhow, bail};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -19,7 +19,12 @@ impl Demo {
         // A comparison holds while the frame it compared stays the same.
         if matches!(
             action,
-            Action::Load(_) | Action::Reload | Action::Settings(_) | Action::Lights(_)
+            Action::Load(_)
+                | Action::Reload
+                | Action::Settings(_)
+                | Action::LightCount(_)
+                | Action::Lights(_)
+                | Action::Materials(_)
         ) && let Some(run) = self.running.as_mut()
         {
             run.comparison = None;
@@ -37,7 +42,17 @@ impl Demo {
                 }),
                 None => Ok(()),
             },
-            Action::Lights(n) => {
+            Action::Lights(lights) => checked(lights).and_then(|lights| {
+                let mut scene = self.scene.clone();
+                scene.lights = lights;
+                self.set_values(scene)
+            }),
+            Action::Materials(materials) => {
+                let mut scene = self.scene.clone();
+                scene.materials = materials;
+                self.set_values(scene)
+            }
+            Action::LightCount(n) => {
                 let mut scene = self.scene.clone();
                 scene
                     .set_light_count(n)
@@ -135,6 +150,15 @@ impl Demo {
         self.apply(action);
     }
 
+    /// Give the renderer `scene`'s edited values and keep them.
+    fn set_values(&mut self, scene: Scene) -> Result<()> {
+        if let Some(run) = self.running.as_mut() {
+            run.renderer.set_scene_values(&scene)?;
+        }
+        self.scene = scene;
+        Ok(())
+    }
+
     /// Load `path` (with the command line's overrides) and make it the
     /// scene; on any error the old scene keeps running.
     fn load(&mut self, path: &Path) -> Result<()> {
@@ -197,4 +221,19 @@ impl Demo {
             self.apply(Action::Reload);
         }
     }
+}
+
+/// Lights as the panel edited them, checked as the scene loader checks a
+/// file's: attenuation coefficients valid, a direction that is not zero
+/// (made unit), a spot's inner angle within its outer one.
+fn checked(mut lights: Vec<Light>) -> Result<Vec<Light>> {
+    for (i, l) in lights.iter_mut().enumerate() {
+        validate_attenuation(l.kc, l.kl, l.kq).map_err(|e| anyhow!("light {i}: {e}"))?;
+        if l.direction.length() < 1e-6 {
+            bail!("light {i}: the direction must not be zero");
+        }
+        l.direction = l.direction.normalize();
+        l.inner_angle = l.inner_angle.min(l.outer_angle);
+    }
+    Ok(lights)
 }

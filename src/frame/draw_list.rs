@@ -19,6 +19,8 @@ use std::path::PathBuf;
 /// One object ready to draw.
 pub struct DrawItem {
     pub mesh: usize,
+    /// Index into the scene's materials.
+    pub material: usize,
     pub model: Mat4,
     pub normal_matrix: Mat3,
     /// The model matrix mirrors (negative determinant): its triangles wind
@@ -74,6 +76,7 @@ impl DrawList {
             };
             items.push(DrawItem {
                 mesh,
+                material: o.material,
                 model: o.model,
                 normal_matrix: normal_matrix(&o.model),
                 mirrored: Mat3::from_mat4(o.model).determinant() < 0.0,
@@ -88,6 +91,17 @@ impl DrawList {
             meshes,
             textures,
         })
+    }
+
+    /// Take the materials' colours and shininess again (the demo edits
+    /// them); the objects, meshes and textures stay.
+    pub fn update_materials(&mut self, scene: &Scene) {
+        for d in &mut self.items {
+            let m = &scene.materials[d.material];
+            d.diffuse = m.diffuse;
+            d.specular = m.specular;
+            d.shininess = m.shininess;
+        }
     }
 
     pub fn mesh(&self, d: &DrawItem) -> &Mesh {

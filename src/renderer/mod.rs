@@ -132,18 +132,34 @@ impl Renderer {
         Ok(())
     }
 
-    /// Take new render settings (the demo's panel): the lights' derived values,
-    /// the plan and, where they changed, the targets are made again, and the
-    /// programs of techniques the new plan adds are built. The scene's objects
-    /// stay uploaded. On an error the renderer keeps its old settings.
+    /// Take new render settings (the demo's panel); see `set_scene_values`.
     pub fn set_render_settings(&mut self, settings: RenderSettings) -> Result<()> {
-        let old = std::mem::replace(&mut self.scene.render, settings);
+        let mut scene = self.scene.clone();
+        scene.render = settings;
+        self.set_scene_values(&scene)
+    }
+
+    /// Take `scene`'s render settings, lights and materials (the demo's
+    /// panel edits them; its objects must be this renderer's): the lights'
+    /// derived values, the plan and, where they changed, the targets are
+    /// made again, and the programs of techniques the new plan adds are
+    /// built. Meshes and textures stay uploaded. On an error the renderer
+    /// keeps what it had.
+    pub fn set_scene_values(&mut self, scene: &Scene) -> Result<()> {
+        if scene.lights.len() > self.max_lights {
+            bail!(
+                "{} lights, but this GL's uniform blocks hold at most {}",
+                scene.lights.len(),
+                self.max_lights
+            );
+        }
+        let old = std::mem::replace(&mut self.scene, scene.clone());
         let lights = FrameLights::new(&self.scene);
         let plan = FramePlan::new(&self.scene, &lights, techniques::ALL);
         let targets_changed = plan.targets != self.plan.targets;
         let old_plan = std::mem::replace(&mut self.plan, plan);
         if let Err(e) = self.build_planned_techniques() {
-            self.scene.render = old;
+            self.scene = old;
             self.plan = old_plan;
             return Err(e);
         }
@@ -158,7 +174,8 @@ impl Renderer {
         }
         self.lights = lights;
         self.upload_lights();
-        self.debug.check(&self.gl, "changing the render settings")
+        self.draws.update_materials(&self.scene);
+        self.debug.check(&self.gl, "changing the scene's values")
     }
 
     /// The render targets of the current plan (the demo's pass inspector).

@@ -87,7 +87,7 @@ pub enum LightKind {
     Spot,
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Light {
     pub kind: LightKind,
     pub position: Vec3,
@@ -114,7 +114,7 @@ impl Light {
     }
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     pub name: String,
     pub diffuse: Vec3,

@@ -1,10 +1,11 @@
 //! "Save as": the scene file as loaded, with the panel's edits written into
-//! it (every render knob, the light grid's count), so that the saved file
+//! it (every render knob, the light grid's count, the listed lights, the
+//! materials' colours and shininess), so that the saved file
 //! loads to the same scene. Paths to meshes and textures are rewritten to
 //! stay valid from the new file's folder: absolute for files on disk,
 //! `embedded:scenes/...` for a shipped scene's assets.
 
-use super::{Scene, knobs, read_text};
+use super::{Light, LightKind, Scene, knobs, read_text};
 use crate::assets;
 use anyhow::{Context as _, Result, anyhow};
 use std::path::Path;
@@ -33,6 +34,29 @@ impl Scene {
                 .and_then(toml::Value::as_table_mut),
         ) {
             grid.insert("count".into(), toml::Value::Integer(n as i64));
+        }
+        // The lights the file lists (not the grid's), as they are now.
+        let fixed = self.lights.len() - self.grid_lights.unwrap_or(0);
+        let lights: Vec<toml::Value> = self.lights[..fixed].iter().map(light_table).collect();
+        if !lights.is_empty() {
+            table.insert("lights".into(), toml::Value::Array(lights));
+        }
+        // The materials' colours and shininess, as they are now (index 0 is
+        // gloss's default material, not in the file).
+        if let Some(materials) = table
+            .get_mut("materials")
+            .and_then(toml::Value::as_table_mut)
+        {
+            for m in self.materials.iter().skip(1) {
+                if let Some(t) = materials
+                    .get_mut(&m.name)
+                    .and_then(toml::Value::as_table_mut)
+                {
+                    t.insert("diffuse".into(), vec3(m.diffuse));
+                    t.insert("specular".into(), vec3(m.specular));
+                    t.insert("shininess".into(), toml::Value::Float(m.shininess.into()));
+                }
+            }
         }
         let base = self.path.parent().unwrap_or(Path::new(""));
         let fix = |v: &mut toml::Value| {
@@ -82,4 +106,50 @@ impl Scene {
                 anyhow!("cannot write {}: {e}", dest.display())
             })
     }
+}
+
+fn vec3(v: glam::Vec3) -> toml::Value {
+    toml::Value::Array(
+        v.to_array()
+            .iter()
+            .map(|&x| toml::Value::Float(x.into()))
+            .collect(),
+    )
+}
+
+/// One light as a `[[lights]]` table with every key written out.
+fn light_table(l: &Light) -> toml::Value {
+    let mut t = toml::Table::new();
+    let kind = match l.kind {
+        LightKind::Directional => "directional",
+        LightKind::Point => "point",
+        LightKind::Spot => "spot",
+    };
+    t.insert("type".into(), toml::Value::String(kind.into()));
+    if l.kind != LightKind::Directional {
+        t.insert("position".into(), vec3(l.position));
+        t.insert(
+            "attenuation".into(),
+            vec3(glam::Vec3::new(l.kc, l.kl, l.kq)),
+        );
+    }
+    if l.kind != LightKind::Point {
+        t.insert("direction".into(), vec3(l.direction));
+    }
+    t.insert("color".into(), vec3(l.color));
+    t.insert("intensity".into(), toml::Value::Float(l.intensity.into()));
+    if l.kind == LightKind::Spot {
+        t.insert(
+            "inner_angle".into(),
+            toml::Value::Float(l.inner_angle.into()),
+        );
+        t.insert(
+            "outer_angle".into(),
+            toml::Value::Float(l.outer_angle.into()),
+        );
+    }
+    if l.shadow {
+        t.insert("shadow".into(), toml::Value::Boolean(true));
+    }
+    toml::Value::Table(t)
 }

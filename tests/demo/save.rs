@@ -32,12 +32,27 @@ fn a_saved_scene_loads_to_the_same_image() {
         if scene.grid_lights.is_some() {
             scene.set_light_count(17).unwrap();
         }
+        // Edited lights and materials, as the panel makes them (the panel
+        // edits the lights the file lists, not a grid's).
+        let fixed = scene.lights.len() - scene.grid_lights.unwrap_or(0);
+        if fixed > 0 {
+            let l = &mut scene.lights[0];
+            l.color = glam::Vec3::new(0.3, 0.9, 0.4);
+            l.intensity *= 1.7;
+            l.kq = 0.0;
+        }
+        if let Some(m) = scene.materials.get_mut(1) {
+            m.diffuse = glam::Vec3::new(0.9, 0.2, 0.1);
+            m.shininess = 77.0;
+        }
         let file = dir.join(format!("saved-{i}.toml"));
         scene.save_as(&file).unwrap();
         let mut again = Scene::load(&file).unwrap();
         assert_eq!(again.render, scene.render, "{}", path.display());
         assert_eq!(again.lights.len(), scene.lights.len());
         assert_eq!(again.grid_lights, scene.grid_lights);
+        assert_eq!(again.lights, scene.lights, "{}", path.display());
+        assert_eq!(again.materials, scene.materials, "{}", path.display());
         for s in [&mut scene, &mut again] {
             s.render.size = (96, 54);
         }

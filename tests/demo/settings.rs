@@ -152,3 +152,42 @@ fn every_setting_gives_the_same_image_from_the_file_the_command_line_and_the_pan
     }
     ctx.debug.check(&ctx.gl, "changing settings").unwrap();
 }
+
+#[test]
+fn edited_lights_and_materials_give_the_image_of_a_scene_made_with_them() {
+    // The panel's path: values changed on a running renderer. The reference:
+    // a new renderer for the edited scene.
+    let ctx = common::context(common::backend());
+    let mut scene = common::scene("default.toml");
+    scene.render.size = SIZE;
+    let mut live = Renderer::new(
+        &ctx.gl,
+        &ctx.debug,
+        &scene,
+        &Sources::Embedded,
+        SIZE.0 as i32,
+        SIZE.1 as i32,
+    )
+    .unwrap();
+    live.render(&scene.camera).unwrap();
+    let before = live.read_image();
+    scene.lights[0].color = glam::Vec3::new(0.2, 1.0, 0.3);
+    scene.lights[1].position.y += 1.0;
+    scene.lights[1].kl = 0.0;
+    scene.materials[1].diffuse = glam::Vec3::new(1.0, 0.1, 0.1);
+    scene.materials[1].shininess = 5.0;
+    live.set_scene_values(&scene).unwrap();
+    live.render(&scene.camera).unwrap();
+    let edited = live.read_image();
+    let fresh = render_scene(&ctx, &scene, Output::Srgb8)
+        .unwrap()
+        .read_image();
+    assert!(
+        edited.as_raw() == fresh.as_raw(),
+        "live edits != a scene made with them"
+    );
+    assert!(
+        edited.as_raw() != before.as_raw(),
+        "the edits change the image"
+    );
+}

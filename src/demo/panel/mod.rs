@@ -10,6 +10,7 @@
 
 mod knob;
 mod timings;
+mod values;
 
 pub use timings::Timings;
 
@@ -17,7 +18,7 @@ use super::inspector::View;
 use super::keys::KEYS;
 use crate::frame::plan::FramePlan;
 use crate::frame::timing::PassTimes;
-use crate::scene::{RenderSettings, Scene, knobs};
+use crate::scene::{Light, Material, RenderSettings, Scene, knobs};
 use crate::techniques;
 use std::path::PathBuf;
 
@@ -30,7 +31,12 @@ pub enum Action {
     SaveAs(PathBuf),
     Reload,
     Settings(RenderSettings),
-    Lights(usize),
+    /// The number of lights of the scene's `[light_grid]`.
+    LightCount(usize),
+    /// Edited lights (all of them, in the scene's order).
+    Lights(Vec<Light>),
+    /// Edited materials (all of them).
+    Materials(Vec<Material>),
     /// Show a view full-window (None: the final image).
     Inspect(Option<usize>),
     /// A screenshot; `true`: with the panel.
@@ -165,10 +171,16 @@ impl PanelState {
                         ui.label("light grid:");
                         let r = ui.add(egui::Slider::new(&mut count, 0..=1024).logarithmic(true));
                         if r.drag_stopped() || (r.changed() && !r.dragged()) {
-                            actions.push(Action::Lights(count));
+                            actions.push(Action::LightCount(count));
                         }
                         ui.label(format!("(+{fixed} fixed)"));
                     });
+                }
+                if let Some(l) = values::lights(ui, input.scene) {
+                    actions.push(Action::Lights(l));
+                }
+                if let Some(m) = values::materials(ui, input.scene) {
+                    actions.push(Action::Materials(m));
                 }
             });
     }

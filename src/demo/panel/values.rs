@@ -1,0 +1,103 @@
+//! The scene's lights and materials, editable live: each light's colour,
+//! intensity, position, direction, Kc/Kl/Kq attenuation and cone angles;
+//! each material's diffuse and specular colours and shininess. Lights made
+//! by a `[light_grid]` change through its count instead.
+
+use crate::scene::{LightKind, Scene};
+use glam::Vec3;
+
+fn vec3(
+    ui: &mut egui::Ui,
+    label: &str,
+    v: &mut Vec3,
+    range: std::ops::RangeInclusive<f32>,
+) -> bool {
+    ui.horizontal(|ui| {
+        ui.label(label);
+        let mut changed = false;
+        for c in [&mut v.x, &mut v.y, &mut v.z] {
+            changed |= ui
+                .add(egui::DragValue::new(c).range(range.clone()).speed(0.01))
+                .changed();
+        }
+        changed
+    })
+    .inner
+}
+
+fn number(
+    ui: &mut egui::Ui,
+    label: &str,
+    v: &mut f32,
+    range: std::ops::RangeInclusive<f32>,
+) -> bool {
+    ui.horizontal(|ui| {
+        ui.label(label);
+        ui.add(egui::DragValue::new(v).range(range).speed(0.01))
+            .changed()
+    })
+    .inner
+}
+
+/// The lights listed in the scene file, editable; Some(new lights) when one changed.
+pub fn lights(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::Light>> {
+    let fixed = scene.lights.len() - scene.grid_lights.unwrap_or(0);
+    if fixed == 0 {
+        return None;
+    }
+    let mut lights = scene.lights.clone();
+    let mut changed = false;
+    egui::CollapsingHeader::new(format!("Lights ({fixed})"))
+        .default_open(false)
+        .show(ui, |ui| {
+            for (i, l) in lights.iter_mut().take(fixed).enumerate() {
+                let kind = match l.kind {
+                    LightKind::Directional => "directional",
+                    LightKind::Point => "point",
+                    LightKind::Spot => "spot",
+                };
+                egui::CollapsingHeader::new(format!("light {i}: {kind}"))
+                    .id_salt(("light", i))
+                    .show(ui, |ui| {
+                        changed |= vec3(ui, "colour", &mut l.color, 0.0..=10.0);
+                        changed |= number(ui, "intensity", &mut l.intensity, 0.0..=1000.0);
+                        if l.kind != LightKind::Directional {
+                            changed |= vec3(ui, "position", &mut l.position, -1e4..=1e4);
+                            let mut k = Vec3::new(l.kc, l.kl, l.kq);
+                            if vec3(ui, "Kc Kl Kq", &mut k, 0.0..=100.0) {
+                                (l.kc, l.kl, l.kq) = (k.x, k.y, k.z);
+                                changed = true;
+                            }
+                        }
+                        if l.kind != LightKind::Point {
+                            changed |= vec3(ui, "direction", &mut l.direction, -1.0..=1.0);
+                        }
+                        if l.kind == LightKind::Spot {
+                            changed |= number(ui, "inner angle", &mut l.inner_angle, 0.0..=88.0);
+                            changed |= number(ui, "outer angle", &mut l.outer_angle, 0.0..=88.0);
+                        }
+                    });
+            }
+        });
+    changed.then_some(lights)
+}
+
+/// The materials, editable; Some(new materials) when one changed.
+pub fn materials(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::Material>> {
+    let mut materials = scene.materials.clone();
+    let mut changed = false;
+    egui::CollapsingHeader::new(format!("Materials ({})", materials.len()))
+        .default_open(false)
+        .show(ui, |ui| {
+            for (i, m) in materials.iter_mut().enumerate() {
+                egui::CollapsingHeader::new(&m.name)
+                    .id_salt(("material", i))
+                    .show(ui, |ui| {
+                        changed |= vec3(ui, "diffuse", &mut m.diffuse, 0.0..=10.0);
+                        changed |= vec3(ui, "specular", &mut m.specular, 0.0..=10.0);
+                        changed |= number(ui, "shininess", &mut m.shininess, 1.0..=4096.0);
+                    });
+            }
+        });
+    changed.then_some(materials)
+}

@@ -102,7 +102,19 @@ impl Demo {
         let Some(run) = self.running.as_mut() else {
             return Ok(false);
         };
-        // 3. The panel, then the state egui leaves behind put back.
+        // 3. The panel (with the inspector's thumbnails), then the state
+        //    egui leaves behind put back.
+        if run.panel.open && run.panel.thumbnails {
+            run.thumbnails.update(
+                &run.ctx.gl,
+                &run.egui.egui_ctx,
+                &views,
+                &run.renderer,
+                &camera,
+                &run.inspector,
+                run.panel.exposure,
+            )?;
+        }
         let shipped = assets::shipped_scenes();
         let gl_info = format!(
             "{} — OpenGL {}.{} core",
@@ -123,6 +135,8 @@ impl Demo {
             error: self.message.as_deref(),
             status: self.status.as_deref(),
             comparison: comparison.as_deref(),
+            thumbnails: &run.thumbnails.textures,
+            size: (run.renderer.width, run.renderer.height),
             gl_info: &gl_info,
         };
         let mut actions = Vec::new();

@@ -23,6 +23,7 @@ mod present;
 pub use present::restore_after_egui;
 mod screenshot;
 mod shaders;
+mod thumbnails;
 pub mod volume_views;
 
 use crate::gl::framebuffer::Framebuffer;
@@ -120,6 +121,7 @@ struct Running {
     panel: PanelState,
     inspector: Inspector,
     volume_views: volume_views::VolumeViews,
+    thumbnails: thumbnails::Thumbnails,
     /// The last "compare with reference", until the settings or scene change.
     comparison: Option<compare::Comparison>,
     /// What the inspector draws into (never one of the renderer's targets).
@@ -188,6 +190,7 @@ impl Demo {
             inspector: Inspector::new(&ctx.gl, &self.sources)?,
             volume_views: volume_views::VolumeViews::new(&ctx.gl, &self.sources)?,
             comparison: None,
+            thumbnails: thumbnails::Thumbnails::new(),
             inspect_fb: None,
             ctx,
             frames: 0,

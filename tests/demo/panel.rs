@@ -47,6 +47,8 @@ fn the_panel_is_drawn_and_leaves_the_scene_and_the_gl_state_as_they_were() {
         status: None,
         comparison: Some("volumes against forward, 640x400: RMSE 0.1/255"),
         gl_info: "headless test",
+        thumbnails: &[],
+        size: (w as i32, h as i32),
     };
     let raw = egui::RawInput {
         screen_rect: Some(egui::Rect::from_min_size(

@@ -58,7 +58,11 @@ pub struct PanelInput<'a> {
     pub status: Option<&'a str>,
     /// The last comparison with the forward reference, in words.
     pub comparison: Option<&'a str>,
+    /// A small picture of each view (None: no thumbnail for it).
+    pub thumbnails: &'a [Option<egui::TextureHandle>],
     pub gl_info: &'a str,
+    /// The frame's size in pixels (every target has it).
+    pub size: (i32, i32),
 }
 
 /// What the panel remembers between frames.
@@ -70,6 +74,8 @@ pub struct PanelState {
     pub timings: Timings,
     /// Time each pass (glFinish after it) while the panel is shown.
     pub pass_times: bool,
+    /// Draw the inspector's thumbnail strip.
+    pub thumbnails: bool,
     path_text: String,
     save_text: String,
 }
@@ -83,6 +89,7 @@ impl PanelState {
             exposure: 1.0,
             timings: Timings::default(),
             pass_times: true,
+            thumbnails: true,
             path_text: scene_path.to_string(),
             save_text: "edited.toml".into(),
         }
@@ -209,6 +216,25 @@ impl PanelState {
                             }
                         }
                     });
+                ui.checkbox(&mut self.thumbnails, "thumbnails (click one to view it)");
+                if self.thumbnails {
+                    egui::ScrollArea::horizontal().show(ui, |ui| {
+                        ui.horizontal(|ui| {
+                            for (i, t) in input.thumbnails.iter().enumerate() {
+                                let Some(t) = t else { continue };
+                                let image = egui::Image::from_texture(t)
+                                    .fit_to_exact_size(egui::vec2(96.0, 54.0))
+                                    .sense(egui::Sense::click());
+                                let r = ui.add(image).on_hover_text(
+                                    input.views.get(i).map(View::label).unwrap_or_default(),
+                                );
+                                if r.clicked() {
+                                    actions.push(Action::Inspect(Some(i)));
+                                }
+                            }
+                        });
+                    });
+                }
                 ui.add(
                     egui::Slider::new(&mut self.exposure, 0.01..=100.0)
                         .logarithmic(true)
@@ -229,7 +255,8 @@ impl PanelState {
                         .plan
                         .target(v.target)
                         .map(|t| t.attachments().join(", "));
-                    ui.small(format!("{}: {}", v.target, fb.unwrap_or_default()));
+                    let (w, h) = input.size;
+                    ui.small(format!("{} ({w}x{h}): {}", v.target, fb.unwrap_or_default()));
                 }
             });
     }

@@ -32,7 +32,13 @@ impl Demo {
         let result = match action {
             Action::Load(path) => self.load(&assets::scene_path(&path)),
             Action::Reload => self.load(&self.scene_path.clone()),
-            Action::SaveAs(path) => self.scene.save_as(&path).map(|()| {
+            Action::SaveAs(path) => {
+                // The saved scene looks from where the demo looks now.
+                let mut scene = self.scene.clone();
+                scene.camera = self.orbit.camera();
+                scene.save_as(&path)
+            }
+            .map(|()| {
                 println!("gloss: saved {}", path.display());
                 self.status = Some(format!("saved {}", path.display()));
             }),
@@ -84,6 +90,11 @@ impl Demo {
                 }),
                 None => Ok(()),
             },
+            Action::Camera(c) => {
+                self.orbit.set_lens(&c);
+                self.scene.camera = c;
+                Ok(())
+            }
             Action::ResetCamera => {
                 self.orbit = super::Orbit::new(&self.scene.camera);
                 Ok(())

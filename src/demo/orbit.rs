@@ -57,6 +57,13 @@ impl Orbit {
         (right, self.direction.cross(right))
     }
 
+    /// Take `camera`'s projection and near and far planes; the view stays.
+    pub(super) fn set_lens(&mut self, camera: &Camera) {
+        self.base.projection = camera.projection;
+        self.base.near = camera.near;
+        self.base.far = camera.far;
+    }
+
     /// Drag by (dx, dy) pixels with the right or middle button: move the
     /// target (and the eye with it) across the screen.
     pub(super) fn pan(&mut self, dx: f32, dy: f32) {

@@ -36,7 +36,7 @@ pub enum Projection {
     Orthographic { half_height: f32 },
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Camera {
     pub eye: Vec3,
     pub target: Vec3,

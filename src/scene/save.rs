@@ -5,7 +5,7 @@
 //! stay valid from the new file's folder: absolute for files on disk,
 //! `embedded:scenes/...` for a shipped scene's assets.
 
-use super::{Light, LightKind, Scene, knobs, read_text};
+use super::{Camera, Light, LightKind, Projection, Scene, knobs, read_text};
 use crate::assets;
 use anyhow::{Context as _, Result, anyhow};
 use std::path::Path;
@@ -35,6 +35,8 @@ impl Scene {
         ) {
             grid.insert("count".into(), toml::Value::Integer(n as i64));
         }
+        // The camera as it is now (the demo saves its current view).
+        table.insert("camera".into(), camera_table(&self.camera));
         // The lights the file lists (not the grid's), as they are now.
         let fixed = self.lights.len() - self.grid_lights.unwrap_or(0);
         let lights: Vec<toml::Value> = self.lights[..fixed].iter().map(light_table).collect();
@@ -151,5 +153,33 @@ fn light_table(l: &Light) -> toml::Value {
     if l.shadow {
         t.insert("shadow".into(), toml::Value::Boolean(true));
     }
+    toml::Value::Table(t)
+}
+
+/// The `[camera]` table, every key written out.
+fn camera_table(c: &Camera) -> toml::Value {
+    let mut t = toml::Table::new();
+    let f = |x: f32| toml::Value::Float(x.into());
+    match c.projection {
+        Projection::Perspective { fov_y_degrees } => {
+            t.insert(
+                "projection".into(),
+                toml::Value::String("perspective".into()),
+            );
+            t.insert("fov_y".into(), f(fov_y_degrees));
+        }
+        Projection::Orthographic { half_height } => {
+            t.insert(
+                "projection".into(),
+                toml::Value::String("orthographic".into()),
+            );
+            t.insert("half_height".into(), f(half_height));
+        }
+    }
+    t.insert("eye".into(), vec3(c.eye));
+    t.insert("target".into(), vec3(c.target));
+    t.insert("up".into(), vec3(c.up));
+    t.insert("near".into(), f(c.near));
+    t.insert("far".into(), f(c.far));
     toml::Value::Table(t)
 }

@@ -41,6 +41,14 @@ fn a_saved_scene_loads_to_the_same_image() {
             l.intensity *= 1.7;
             l.kq = 0.0;
         }
+        // The demo saves the view it shows: another eye, another lens.
+        scene.camera.eye += glam::Vec3::new(0.5, 0.25, -0.125);
+        scene.camera.near *= 2.0;
+        if let gloss::scene::Projection::Perspective { fov_y_degrees } =
+            &mut scene.camera.projection
+        {
+            *fov_y_degrees += 7.5;
+        }
         if let Some(m) = scene.materials.get_mut(1) {
             m.diffuse = glam::Vec3::new(0.9, 0.2, 0.1);
             m.shininess = 77.0;
@@ -53,6 +61,7 @@ fn a_saved_scene_loads_to_the_same_image() {
         assert_eq!(again.grid_lights, scene.grid_lights);
         assert_eq!(again.lights, scene.lights, "{}", path.display());
         assert_eq!(again.materials, scene.materials, "{}", path.display());
+        assert_eq!(again.camera, scene.camera, "{}", path.display());
         for s in [&mut scene, &mut again] {
             s.render.size = (96, 54);
         }

@@ -18,7 +18,7 @@ use super::inspector::View;
 use super::keys::KEYS;
 use crate::frame::plan::FramePlan;
 use crate::frame::timing::PassTimes;
-use crate::scene::{Light, Material, RenderSettings, Scene, knobs};
+use crate::scene::{Camera, Light, Material, RenderSettings, Scene, knobs};
 use crate::techniques;
 use std::path::PathBuf;
 
@@ -37,6 +37,8 @@ pub enum Action {
     Lights(Vec<Light>),
     /// Edited materials (all of them).
     Materials(Vec<Material>),
+    /// The camera's lens edited.
+    Camera(Camera),
     /// Show a view full-window (None: the final image).
     Inspect(Option<usize>),
     /// A screenshot; `true`: with the panel.
@@ -188,6 +190,9 @@ impl PanelState {
                 }
                 if let Some(m) = values::materials(ui, input.scene) {
                     actions.push(Action::Materials(m));
+                }
+                if let Some(c) = values::camera(ui, &input.scene.camera) {
+                    actions.push(Action::Camera(c));
                 }
             });
     }

@@ -3,7 +3,7 @@
 //! each material's diffuse and specular colours and shininess. Lights made
 //! by a `[light_grid]` change through its count instead.
 
-use crate::scene::{LightKind, Scene};
+use crate::scene::{Camera, LightKind, Projection, Scene};
 use glam::Vec3;
 
 fn vec3(
@@ -100,4 +100,26 @@ pub fn materials(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::M
             }
         });
     changed.then_some(materials)
+}
+
+/// The camera's lens: field of view (or half height), near and far planes;
+/// Some(new camera) when one changed. Where it looks from is the orbit's.
+pub fn camera(ui: &mut egui::Ui, camera: &Camera) -> Option<Camera> {
+    let mut c = camera.clone();
+    let mut changed = false;
+    egui::CollapsingHeader::new("Camera")
+        .default_open(false)
+        .show(ui, |ui| {
+            match &mut c.projection {
+                Projection::Perspective { fov_y_degrees } => {
+                    changed |= number(ui, "fov y (degrees)", fov_y_degrees, 1.0..=170.0);
+                }
+                Projection::Orthographic { half_height } => {
+                    changed |= number(ui, "half height", half_height, 1e-3..=1e4);
+                }
+            }
+            changed |= number(ui, "near", &mut c.near, 1e-4..=1e3);
+            changed |= number(ui, "far", &mut c.far, 1e-3..=1e6);
+        });
+    (changed && c.near > 0.0 && c.far > c.near).then_some(c)
 }

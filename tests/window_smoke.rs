@@ -192,3 +192,64 @@ fn demo_driven_by_keys_switches_inspects_and_screenshots() {
         "the demo says where its screenshots went:\n{log}"
     );
 }
+
+/// The window resized by the X server: very large (3840 x 2160), 1 x 1,
+/// unmapped and mapped again, and back to 1280 x 720, with GL debug output
+/// on: no GL error, no panic, and the last screenshot has the last size.
+#[test]
+fn demo_survives_huge_tiny_and_hidden_windows() {
+    if std::env::var("GLOSS_SKIP_WINDOW_TEST").as_deref() == Ok("1") {
+        eprintln!("skipped: GLOSS_SKIP_WINDOW_TEST=1");
+        return;
+    }
+    assert!(
+        xvfb_run_installed() && Command::new("xdotool").arg("version").output().is_ok(),
+        "xvfb-run and xdotool are needed (.ci/run installs them), \
+         or set GLOSS_SKIP_WINDOW_TEST=1 to skip this test"
+    );
+    let dir = std::env::temp_dir().join("gloss-demo-sizes");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = format!(
+        r#"
+        "{GLOSS}" --backend window --debug --frames 3000 plane > gloss.log 2>&1 &
+        pid=$!
+        wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
+        xdotool windowfocus --sync "$wid"
+        sleep 2
+        for s in "3840 2160" "1 1" "1280 720"; do xdotool windowsize "$wid" $s; sleep 3; done
+        xdotool windowunmap "$wid"; sleep 2; xdotool windowmap "$wid"; sleep 2
+        xdotool windowfocus --sync "$wid"
+        xdotool key F12; sleep 2
+        xdotool key Escape
+        wait $pid
+        "#
+    );
+    let out = Command::new("xvfb-run")
+        .args([
+            "-a",
+            "-s",
+            "-screen 0 3840x2160x24",
+            "timeout",
+            "300",
+            "bash",
+            "-c",
+        ])
+        .arg(&script)
+        .current_dir(&dir)
+        .output()
+        .expect("could not start xvfb-run");
+    let log = std::fs::read_to_string(dir.join("gloss.log")).unwrap_or_default();
+    assert!(
+        out.status.success(),
+        "the resized demo failed\n{}\n--- gloss.log ---\n{log}",
+        describe(&out)
+    );
+    assert!(
+        !log.to_lowercase().contains("error") && !log.contains("panicked"),
+        "the demo reported an error:\n{log}"
+    );
+    let shot = image::open(dir.join("gloss-screenshot-1.png"))
+        .unwrap_or_else(|e| panic!("screenshot: {e}\n--- gloss.log ---\n{log}"));
+    assert_eq!((shot.width(), shot.height()), (1280, 720), "{log}");
+}

@@ -43,3 +43,37 @@ impl Drop for TimerQuery {
         }
     }
 }
+
+/// One GL_TIMESTAMP query (GL 3.3 core): `record` asks for the GPU's clock
+/// at the moment every command issued before it has finished.
+pub struct Timestamp {
+    gl: Gl,
+    pub id: glow::Query,
+}
+
+impl Timestamp {
+    pub fn new(gl: &Gl) -> Result<Timestamp> {
+        let id = unsafe { gl.create_query() }.map_err(|e| anyhow!("glGenQueries: {e}"))?;
+        super::live::made(super::live::Kind::Query);
+        Ok(Timestamp { gl: gl.clone(), id })
+    }
+
+    /// glQueryCounter(id, GL_TIMESTAMP)
+    pub fn record(&self) {
+        unsafe { self.gl.query_counter(self.id, glow::TIMESTAMP) }
+    }
+
+    /// Wait for the result; nanoseconds on the GPU's clock.
+    pub fn result_ns(&self) -> u64 {
+        unsafe { self.gl.get_query_parameter_u64(self.id, glow::QUERY_RESULT) }
+    }
+}
+
+impl Drop for Timestamp {
+    fn drop(&mut self) {
+        unsafe {
+            self.gl.delete_query(self.id);
+            super::live::freed(super::live::Kind::Query);
+        }
+    }
+}

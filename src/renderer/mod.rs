@@ -12,7 +12,7 @@ use crate::frame::lights::{FrameLights, LIGHT_STRIDE, max_lights};
 use crate::frame::meshes::FrameMeshes;
 use crate::frame::plan::{FramePlan, Pass};
 use crate::frame::targets::{OUTPUT, TargetDesc, Targets};
-use crate::frame::timing::{PassTimer, PassTimes};
+use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
 use crate::frame::uniforms::FrameUniforms;
 use crate::frame::{Frame, Programs, RunPasses};
 use crate::gl::buffer::Buffer;
@@ -46,6 +46,9 @@ pub struct Renderer {
     techniques: Vec<Option<Box<dyn RunPasses>>>,
     /// Measure each pass with glFinish + the CPU clock.
     pub timing: bool,
+    /// With `timing`, also GL_TIMESTAMP queries: on where the driver's timer
+    /// queries are trustworthy (not on llvmpipe).
+    pub gpu_timers: bool,
     pub last_times: PassTimes,
 }
 
@@ -107,6 +110,9 @@ impl Renderer {
             max_lights,
             techniques,
             timing: false,
+            gpu_timers: timer_queries_trustworthy(&unsafe {
+                gl.get_parameter_string(glow::RENDERER)
+            }),
             last_times: PassTimes::default(),
         };
         r.build_planned_techniques()?;
@@ -269,7 +275,7 @@ impl Renderer {
             targets: &self.targets,
             meshes: &self.meshes,
         };
-        let mut timer = PassTimer::new(&self.gl, self.timing);
+        let mut timer = PassTimer::new(&self.gl, self.timing, self.gpu_timers);
         for pass in &self.plan.passes {
             let technique = self.techniques[pass.technique].as_ref();
             technique.expect("built for its pass").run(pass, &frame);

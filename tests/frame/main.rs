@@ -7,3 +7,4 @@ mod common;
 
 mod passes;
 mod plan;
+mod timing;

@@ -38,11 +38,19 @@ impl Timings {
                 ui.checkbox(pass_times, "time each pass").on_hover_text(
                     "glFinish after each pass: exact pass times, a slightly slower frame",
                 );
-                ui.small("clock: CPU around glFinish after each pass");
+                let gpu = times.gpu.len() == times.passes.len() && !times.gpu.is_empty();
+                ui.small(if gpu {
+                    "clocks: CPU around glFinish after each pass, and the GPU's (GL_TIMESTAMP)"
+                } else {
+                    "clock: CPU around glFinish after each pass (this driver's timer queries under-report)"
+                });
                 egui::Grid::new("pass-times").striped(true).show(ui, |ui| {
-                    for (name, ms) in &times.passes {
+                    for (i, (name, ms)) in times.passes.iter().enumerate() {
                         ui.label(*name);
                         ui.monospace(format!("{ms:8.2} ms"));
+                        if gpu {
+                            ui.monospace(format!("GPU {:8.2} ms", times.gpu[i]));
+                        }
                         ui.end_row();
                     }
                     ui.strong("renderer");

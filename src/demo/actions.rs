@@ -25,6 +25,7 @@ impl Demo {
                 | Action::LightCount(_)
                 | Action::Lights(_)
                 | Action::Materials(_)
+                | Action::Objects(_)
         ) && let Some(run) = self.running.as_mut()
         {
             run.comparison = None;
@@ -90,6 +91,12 @@ impl Demo {
                 }),
                 None => Ok(()),
             },
+            Action::Objects(mut objects) => {
+                crate::scene::update_models(&mut objects);
+                let mut scene = self.scene.clone();
+                scene.objects = objects;
+                self.set_values(scene)
+            }
             Action::Camera(c) => {
                 self.orbit.set_lens(&c);
                 self.scene.camera = c;

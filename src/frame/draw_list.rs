@@ -93,10 +93,14 @@ impl DrawList {
         })
     }
 
-    /// Take the materials' colours and shininess again (the demo edits
-    /// them); the objects, meshes and textures stay.
-    pub fn update_materials(&mut self, scene: &Scene) {
-        for d in &mut self.items {
+    /// Take the objects' model matrices and the materials' colours and
+    /// shininess again (the demo edits them); meshes and textures stay.
+    /// `scene` has the objects this list was made from, in the same order.
+    pub fn update_values(&mut self, scene: &Scene) {
+        for (d, o) in self.items.iter_mut().zip(&scene.objects) {
+            d.model = o.model;
+            d.normal_matrix = normal_matrix(&o.model);
+            d.mirrored = Mat3::from_mat4(o.model).determinant() < 0.0;
             let m = &scene.materials[d.material];
             d.diffuse = m.diffuse;
             d.specular = m.specular;

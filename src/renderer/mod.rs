@@ -145,11 +145,12 @@ impl Renderer {
         self.set_scene_values(&scene)
     }
 
-    /// Take `scene`'s render settings, lights and materials (the demo's
-    /// panel edits them; its objects must be this renderer's): the lights'
-    /// derived values, the plan and, where they changed, the targets are
-    /// made again, and the programs of techniques the new plan adds are
-    /// built. Meshes and textures stay uploaded. On an error the renderer
+    /// Take `scene`'s render settings, lights, materials and object
+    /// transforms (the demo's panel edits them; its objects must be this
+    /// renderer's, in the same order): the lights' derived values, the plan
+    /// and, where they changed, the targets are made again, and the programs
+    /// of techniques the new plan adds are built. Meshes and textures stay
+    /// uploaded. On an error the renderer
     /// keeps what it had.
     pub fn set_scene_values(&mut self, scene: &Scene) -> Result<()> {
         if scene.lights.len() > self.max_lights {
@@ -180,7 +181,7 @@ impl Renderer {
         }
         self.lights = lights;
         self.upload_lights();
-        self.draws.update_materials(&self.scene);
+        self.draws.update_values(&self.scene);
         self.debug.check(&self.gl, "changing the scene's values")
     }
 

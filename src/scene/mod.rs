@@ -140,13 +140,52 @@ impl MeshSource {
     pub const BUILTIN: &'static str = "sphere, icosphere, cube, plane, cylinder, cone, torus";
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     pub name: String,
     pub mesh: MeshSource,
     pub material: usize,
-    /// Model matrix including every parent's.
+    /// The local transform as the file writes it: position, rotation
+    /// (degrees about x, y, z) and scale.
+    pub position: Vec3,
+    pub rotation: Vec3,
+    pub scale: Vec3,
+    /// Index of the parent object (resolved, never a cycle).
+    pub parent: Option<usize>,
+    /// Model matrix including every parent's (`update_models`).
     pub model: Mat4,
+}
+
+impl Object {
+    /// T * Rz * Ry * Rx * S (column vectors: scale first, then rotate about
+    /// x, y, z, then move), notes 01 §2.6.
+    pub fn local(&self) -> Mat4 {
+        let r = self.rotation * (std::f32::consts::PI / 180.0);
+        let (p, s) = (self.position, self.scale);
+        math::translate(p.x, p.y, p.z)
+            * math::rotate_z(r.z)
+            * math::rotate_y(r.y)
+            * math::rotate_x(r.x)
+            * math::scale(s.x, s.y, s.z)
+    }
+}
+
+/// Every object's model matrix: its local transform, then its parents' up
+/// the chain (notes 01 §6.4, scene graphs).
+pub fn update_models(objects: &mut [Object]) {
+    let locals: Vec<Mat4> = objects.iter().map(Object::local).collect();
+    let parents: Vec<Option<usize>> = objects.iter().map(|o| o.parent).collect();
+    for (i, o) in objects.iter_mut().enumerate() {
+        let mut model = locals[i];
+        let mut up = parents[i];
+        // The loader refused cycles; the bound keeps an edited one finite.
+        for _ in 0..parents.len() {
+            let Some(p) = up else { break };
+            model = locals[p] * model;
+            up = parents[p];
+        }
+        o.model = model;
+    }
 }
 
 #[derive(Clone, Debug)]

@@ -6,7 +6,6 @@
 use super::file::SceneFile;
 use super::{Camera, Material, MeshSource, Object, Projection, RenderSettings, Scene};
 use crate::assets;
-use crate::math;
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
 use std::collections::HashMap;
@@ -251,40 +250,39 @@ fn objects(
         if object_names.insert(name.clone(), i).is_some() {
             bail!("{}: two objects are named \"{name}\"", key("name"));
         }
-        let [rx, ry, rz] = o.rotation.map(f32::to_radians);
-        let [sx, sy, sz] = o.scale;
-        let [tx, ty, tz] = o.position;
-        // T * Rz * Ry * Rx * S (column vectors: scale first, then rotate x, y, z, then move).
-        let local = math::translate(tx, ty, tz)
-            * math::rotate_z(rz)
-            * math::rotate_y(ry)
-            * math::rotate_x(rx)
-            * math::scale(sx, sy, sz);
-        locals.push((name, mesh, material, local));
+        locals.push((name, mesh, material));
     }
     let mut objects = Vec::new();
     for (i, o) in f.objects.iter().enumerate() {
-        let mut model = locals[i].3;
-        let mut parent = o.parent.clone();
+        // The parent by index, and no cycle up the chain.
+        let index = |p: &String| {
+            object_names
+                .get(p)
+                .copied()
+                .ok_or_else(|| anyhow!("objects[{i}].parent: no object named \"{p}\""))
+        };
+        let parent = o.parent.as_ref().map(index).transpose()?;
+        let mut up = o.parent.clone();
         let mut steps = 0;
-        while let Some(p) = parent {
-            let &pi = object_names
-                .get(&p)
-                .ok_or_else(|| anyhow!("objects[{i}].parent: no object named \"{p}\""))?;
+        while let Some(p) = up {
             steps += 1;
             if steps > f.objects.len() {
                 bail!("objects[{i}].parent: the parent chain is a cycle");
             }
-            model = locals[pi].3 * model;
-            parent = f.objects[pi].parent.clone();
+            up = f.objects[index(&p)?].parent.clone();
         }
         objects.push(Object {
             name: locals[i].0.clone(),
             mesh: locals[i].1.clone(),
             material: locals[i].2,
-            model,
+            position: Vec3::from(o.position),
+            rotation: Vec3::from(o.rotation),
+            scale: Vec3::from(o.scale),
+            parent,
+            model: glam::Mat4::IDENTITY,
         });
     }
+    super::update_models(&mut objects);
     Ok(objects)
 }
 

@@ -1,6 +1,7 @@
 //! "Save as": the scene file as loaded, with the panel's edits written into
 //! it (every render knob, the light grid's count, the listed lights, the
-//! materials' colours and shininess), so that the saved file
+//! materials' colours and shininess, the objects' transforms, the camera),
+//! so that the saved file
 //! loads to the same scene. Paths to meshes and textures are rewritten to
 //! stay valid from the new file's folder: absolute for files on disk,
 //! `embedded:scenes/...` for a shipped scene's assets.
@@ -57,6 +58,16 @@ impl Scene {
                     t.insert("diffuse".into(), vec3(m.diffuse));
                     t.insert("specular".into(), vec3(m.specular));
                     t.insert("shininess".into(), toml::Value::Float(m.shininess.into()));
+                }
+            }
+        }
+        // The objects' local transforms, as they are now.
+        if let Some(objects) = table.get_mut("objects").and_then(toml::Value::as_array_mut) {
+            for (t, o) in objects.iter_mut().zip(&self.objects) {
+                if let Some(t) = t.as_table_mut() {
+                    t.insert("position".into(), vec3(o.position));
+                    t.insert("rotation".into(), vec3(o.rotation));
+                    t.insert("scale".into(), vec3(o.scale));
                 }
             }
         }

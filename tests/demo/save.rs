@@ -41,6 +41,12 @@ fn a_saved_scene_loads_to_the_same_image() {
             l.intensity *= 1.7;
             l.kq = 0.0;
         }
+        // A moved, turned, scaled object.
+        let o = &mut scene.objects[0];
+        o.position.y += 0.25;
+        o.rotation.z += 10.0;
+        o.scale *= 1.5;
+        gloss::scene::update_models(&mut scene.objects);
         // The demo saves the view it shows: another eye, another lens.
         scene.camera.eye += glam::Vec3::new(0.5, 0.25, -0.125);
         scene.camera.near *= 2.0;
@@ -62,6 +68,7 @@ fn a_saved_scene_loads_to_the_same_image() {
         assert_eq!(again.lights, scene.lights, "{}", path.display());
         assert_eq!(again.materials, scene.materials, "{}", path.display());
         assert_eq!(again.camera, scene.camera, "{}", path.display());
+        assert_eq!(again.objects, scene.objects, "{}", path.display());
         for s in [&mut scene, &mut again] {
             s.render.size = (96, 54);
         }

@@ -154,7 +154,7 @@ fn every_setting_gives_the_same_image_from_the_file_the_command_line_and_the_pan
 }
 
 #[test]
-fn edited_lights_and_materials_give_the_image_of_a_scene_made_with_them() {
+fn edited_lights_materials_and_objects_give_the_image_of_a_scene_made_with_them() {
     // The panel's path: values changed on a running renderer. The reference:
     // a new renderer for the edited scene.
     let ctx = common::context(common::backend());
@@ -176,6 +176,18 @@ fn edited_lights_and_materials_give_the_image_of_a_scene_made_with_them() {
     scene.lights[1].kl = 0.0;
     scene.materials[1].diffuse = glam::Vec3::new(1.0, 0.1, 0.1);
     scene.materials[1].shininess = 5.0;
+    // Move and turn the box: its child, the rock, follows (notes 01 §6.4).
+    let boxed = scene.objects.iter().position(|o| o.name == "box").unwrap();
+    let rock = scene.objects.iter().position(|o| o.name == "rock").unwrap();
+    assert_eq!(scene.objects[rock].parent, Some(boxed));
+    let rock_before = scene.objects[rock].model;
+    scene.objects[boxed].position.x += 0.5;
+    scene.objects[boxed].rotation.y += 30.0;
+    gloss::scene::update_models(&mut scene.objects);
+    assert_ne!(
+        scene.objects[rock].model, rock_before,
+        "the child moves with its parent"
+    );
     live.set_scene_values(&scene).unwrap();
     live.render(&scene.camera).unwrap();
     let edited = live.read_image();

@@ -39,6 +39,8 @@ pub enum Action {
     Materials(Vec<Material>),
     /// The camera's lens edited.
     Camera(Camera),
+    /// Edited object transforms (all objects, in the scene's order).
+    Objects(Vec<crate::scene::Object>),
     /// Show a view full-window (None: the final image).
     Inspect(Option<usize>),
     /// A screenshot; `true`: with the panel.
@@ -190,6 +192,9 @@ impl PanelState {
                 }
                 if let Some(m) = values::materials(ui, input.scene) {
                     actions.push(Action::Materials(m));
+                }
+                if let Some(o) = values::objects(ui, input.scene) {
+                    actions.push(Action::Objects(o));
                 }
                 if let Some(c) = values::camera(ui, &input.scene.camera) {
                     actions.push(Action::Camera(c));

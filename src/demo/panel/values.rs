@@ -3,7 +3,7 @@
 //! each material's diffuse and specular colours and shininess. Lights made
 //! by a `[light_grid]` change through its count instead.
 
-use crate::scene::{Camera, LightKind, Projection, Scene};
+use crate::scene::{Camera, LightKind, Object, Projection, Scene};
 use glam::Vec3;
 
 fn vec3(
@@ -122,4 +122,25 @@ pub fn camera(ui: &mut egui::Ui, camera: &Camera) -> Option<Camera> {
             changed |= number(ui, "far", &mut c.far, 1e-3..=1e6);
         });
     (changed && c.near > 0.0 && c.far > c.near).then_some(c)
+}
+
+/// Each object's local transform (its parent's applies on top); Some(new
+/// objects) when one changed.
+pub fn objects(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<Object>> {
+    let mut objects = scene.objects.clone();
+    let mut changed = false;
+    egui::CollapsingHeader::new(format!("Objects ({})", objects.len()))
+        .default_open(false)
+        .show(ui, |ui| {
+            for (i, o) in objects.iter_mut().enumerate() {
+                egui::CollapsingHeader::new(&o.name)
+                    .id_salt(("object", i))
+                    .show(ui, |ui| {
+                        changed |= vec3(ui, "position", &mut o.position, -1e4..=1e4);
+                        changed |= vec3(ui, "rotation (degrees)", &mut o.rotation, -360.0..=360.0);
+                        changed |= vec3(ui, "scale", &mut o.scale, -100.0..=100.0);
+                    });
+            }
+        });
+    changed.then_some(objects)
 }

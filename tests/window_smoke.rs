@@ -103,18 +103,6 @@ fn window_without_display_fails_cleanly() {
 /// (128, 255, 128), and the panel's rectangle holds text.
 #[test]
 fn demo_driven_by_keys_switches_inspects_and_screenshots() {
-    if std::env::var("GLOSS_SKIP_WINDOW_TEST").as_deref() == Ok("1") {
-        eprintln!("skipped: GLOSS_SKIP_WINDOW_TEST=1");
-        return;
-    }
-    assert!(
-        xvfb_run_installed() && Command::new("xdotool").arg("version").output().is_ok(),
-        "xvfb-run and xdotool are needed (.ci/run installs them), \
-         or set GLOSS_SKIP_WINDOW_TEST=1 to skip this test"
-    );
-    let dir = std::env::temp_dir().join("gloss-demo-keys");
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
     // Each key is pressed, then the script waits for the frame that shows it.
     let script = format!(
         r#"
@@ -128,30 +116,9 @@ fn demo_driven_by_keys_switches_inspects_and_screenshots() {
         wait $pid
         "#
     );
-    let out = Command::new("xvfb-run")
-        .args([
-            "-a",
-            "-s",
-            "-screen 0 1280x720x24",
-            "timeout",
-            "300",
-            "bash",
-            "-c",
-        ])
-        .arg(&script)
-        .current_dir(&dir)
-        .output()
-        .expect("could not start xvfb-run");
-    let log = std::fs::read_to_string(dir.join("gloss.log")).unwrap_or_default();
-    assert!(
-        out.status.success(),
-        "the driven demo failed\n{}\n--- gloss.log ---\n{log}",
-        describe(&out)
-    );
-    assert!(
-        !log.to_lowercase().contains("error") && !log.contains("panicked"),
-        "the demo reported an error:\n{log}"
-    );
+    let Some((dir, log)) = drive("gloss-demo-keys", "1280x720x24", &script) else {
+        return;
+    };
     let shot = |n: u32| {
         let p = dir.join(format!("gloss-screenshot-{n}.png"));
         image::open(&p)
@@ -198,18 +165,6 @@ fn demo_driven_by_keys_switches_inspects_and_screenshots() {
 /// on: no GL error, no panic, and the last screenshot has the last size.
 #[test]
 fn demo_survives_huge_tiny_and_hidden_windows() {
-    if std::env::var("GLOSS_SKIP_WINDOW_TEST").as_deref() == Ok("1") {
-        eprintln!("skipped: GLOSS_SKIP_WINDOW_TEST=1");
-        return;
-    }
-    assert!(
-        xvfb_run_installed() && Command::new("xdotool").arg("version").output().is_ok(),
-        "xvfb-run and xdotool are needed (.ci/run installs them), \
-         or set GLOSS_SKIP_WINDOW_TEST=1 to skip this test"
-    );
-    let dir = std::env::temp_dir().join("gloss-demo-sizes");
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
     let script = format!(
         r#"
         "{GLOSS}" --backend window --debug --frames 3000 plane > gloss.log 2>&1 &
@@ -225,31 +180,55 @@ fn demo_survives_huge_tiny_and_hidden_windows() {
         wait $pid
         "#
     );
+    let Some((dir, log)) = drive("gloss-demo-sizes", "3840x2160x24", &script) else {
+        return;
+    };
+    let shot = image::open(dir.join("gloss-screenshot-1.png"))
+        .unwrap_or_else(|e| panic!("screenshot: {e}\n--- gloss.log ---\n{log}"));
+    assert_eq!((shot.width(), shot.height()), (1280, 720), "{log}");
+}
+
+/// Run `script` under Xvfb (a `screen` such as "1280x720x24") in a fresh
+/// directory `name` under the temp dir, where the script starts gloss with
+/// its output in gloss.log and drives it with xdotool. Asserts that it exits
+/// 0 and that gloss reported no error; returns the directory and the log.
+/// None when GLOSS_SKIP_WINDOW_TEST=1.
+fn drive(name: &str, screen: &str, body: &str) -> Option<(std::path::PathBuf, String)> {
+    if std::env::var("GLOSS_SKIP_WINDOW_TEST").as_deref() == Ok("1") {
+        eprintln!("skipped: GLOSS_SKIP_WINDOW_TEST=1");
+        return None;
+    }
+    assert!(
+        xvfb_run_installed() && Command::new("xdotool").arg("version").output().is_ok(),
+        "xvfb-run and xdotool are needed (.ci/run installs them), \
+         or set GLOSS_SKIP_WINDOW_TEST=1 to skip this test"
+    );
+    let dir = std::env::temp_dir().join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
     let out = Command::new("xvfb-run")
         .args([
             "-a",
             "-s",
-            "-screen 0 3840x2160x24",
+            &format!("-screen 0 {screen}"),
             "timeout",
             "300",
             "bash",
             "-c",
         ])
-        .arg(&script)
+        .arg(body)
         .current_dir(&dir)
         .output()
         .expect("could not start xvfb-run");
     let log = std::fs::read_to_string(dir.join("gloss.log")).unwrap_or_default();
     assert!(
         out.status.success(),
-        "the resized demo failed\n{}\n--- gloss.log ---\n{log}",
+        "the driven demo failed\n{}\n--- gloss.log ---\n{log}",
         describe(&out)
     );
     assert!(
         !log.to_lowercase().contains("error") && !log.contains("panicked"),
         "the demo reported an error:\n{log}"
     );
-    let shot = image::open(dir.join("gloss-screenshot-1.png"))
-        .unwrap_or_else(|e| panic!("screenshot: {e}\n--- gloss.log ---\n{log}"));
-    assert_eq!((shot.width(), shot.height()), (1280, 720), "{log}");
+    Some((dir, log))
 }

@@ -106,7 +106,7 @@ fn demo_driven_by_keys_switches_inspects_and_screenshots() {
     // Each key is pressed, then the script waits for the frame that shows it.
     let script = format!(
         r#"
-        "{GLOSS}" --backend window --debug --frames 3000 mixed-lights > gloss.log 2>&1 &
+        "{GLOSS}" --backend window --debug --frames 200000 mixed-lights > gloss.log 2>&1 &
         pid=$!
         wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
         xdotool windowfocus --sync "$wid"
@@ -165,9 +165,12 @@ fn demo_driven_by_keys_switches_inspects_and_screenshots() {
 /// on: no GL error, no panic, and the last screenshot has the last size.
 #[test]
 fn demo_survives_huge_tiny_and_hidden_windows() {
+    // --frames only bounds a demo that Esc failed to stop: at 1 x 1 a frame
+    // takes well under a millisecond, so a small cap would end the demo
+    // before the keys arrive.
     let script = format!(
         r#"
-        "{GLOSS}" --backend window --debug --frames 3000 plane > gloss.log 2>&1 &
+        "{GLOSS}" --backend window --debug --frames 200000 plane > gloss.log 2>&1 &
         pid=$!
         wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
         xdotool windowfocus --sync "$wid"

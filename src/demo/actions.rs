@@ -43,12 +43,11 @@ impl Demo {
                 println!("gloss: saved {}", path.display());
                 self.status = Some(format!("saved {}", path.display()));
             }),
-            Action::Settings(s) => match self.running.as_mut() {
-                Some(run) => run.renderer.set_render_settings(s.clone()).map(|()| {
-                    self.scene.render = s;
-                }),
-                None => Ok(()),
-            },
+            Action::Settings(s) => {
+                let mut scene = self.scene.clone();
+                scene.render = s;
+                self.set_values(scene)
+            }
             Action::Lights(lights) => checked(lights).and_then(|lights| {
                 let mut scene = self.scene.clone();
                 scene.lights = lights;

@@ -4,7 +4,6 @@
 
 use super::panel::PanelInput;
 use super::{Demo, inspector, present, screenshot, to_i32};
-use crate::assets;
 use crate::gl::framebuffer::Framebuffer;
 use anyhow::Result;
 use std::path::PathBuf;
@@ -115,11 +114,6 @@ impl Demo {
                 run.panel.exposure,
             )?;
         }
-        let shipped = assets::shipped_scenes();
-        let gl_info = format!(
-            "{} — OpenGL {}.{} core",
-            run.ctx.info.renderer, run.ctx.info.major, run.ctx.info.minor
-        );
         let scene_path = self.scene_path.display().to_string();
         let comparison = run
             .comparison
@@ -128,7 +122,7 @@ impl Demo {
         let input = PanelInput {
             scene: &self.scene,
             scene_path: &scene_path,
-            shipped: &shipped,
+            shipped: &run.shipped,
             plan: &run.renderer.plan,
             times: &run.renderer.last_times,
             views: &views,
@@ -137,7 +131,7 @@ impl Demo {
             comparison: comparison.as_deref(),
             thumbnails: &run.thumbnails.textures,
             size: (run.renderer.width, run.renderer.height),
-            gl_info: &gl_info,
+            gl_info: &run.gl_info,
         };
         let mut actions = Vec::new();
         let panel = &mut run.panel;

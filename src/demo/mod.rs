@@ -127,6 +127,9 @@ struct Running {
     /// What the inspector draws into (never one of the renderer's targets).
     inspect_fb: Option<Framebuffer>,
     ctx: WindowContext,
+    /// What the panel lists and names, found once: the shipped scenes, the GL.
+    shipped: Vec<String>,
+    gl_info: String,
     frames: u32,
     left_down: bool,
     /// Right or middle button held: pan.
@@ -192,6 +195,11 @@ impl Demo {
             comparison: None,
             thumbnails: thumbnails::Thumbnails::new(),
             inspect_fb: None,
+            shipped: crate::assets::shipped_scenes(),
+            gl_info: format!(
+                "{} — OpenGL {}.{} core",
+                ctx.info.renderer, ctx.info.major, ctx.info.minor
+            ),
             ctx,
             frames: 0,
             left_down: false,

@@ -41,6 +41,13 @@ struct Cli {
     command: Option<Command>,
 }
 
+/// A buffer `gloss render --inspect` writes instead of the image.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Inspect {
+    /// The output's stencil buffer at the end of the frame.
+    Stencil,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Render a scene headless to a PNG.
@@ -60,6 +67,14 @@ enum Command {
         /// Number of generated lights (scenes with a [light_grid]).
         #[arg(long)]
         lights: Option<usize>,
+        /// Write a buffer other than the image: `stencil` (each stencil
+        /// value its own colour, 0 black).
+        #[arg(long, value_enum)]
+        inspect: Option<Inspect>,
+        /// With --inspect: the buffer as it is after this pass (1-based, as
+        /// `gloss plan` numbers them) rather than at the end of the frame.
+        #[arg(long, requires = "inspect")]
+        after: Option<usize>,
     },
     /// Print GL_VERSION, GL_RENDERER, GLSL version, backend and context flags.
     Info,
@@ -108,9 +123,24 @@ fn headless_backend(b: Option<Backend>) -> Result<Backend> {
     }
 }
 
-pub fn render_to_png(scene: &Scene, backend: Backend, debug: bool, out: &Path) -> Result<()> {
+fn render_to_png(
+    scene: &Scene,
+    backend: Backend,
+    debug: bool,
+    out: &Path,
+    inspect: Option<(Inspect, Option<usize>)>,
+) -> Result<()> {
     let ctx = Headless::new(backend, debug)?;
-    let img = render_scene(&ctx, scene, Output::Srgb8)?.read_image();
+    let mut r = render_scene(&ctx, scene, Output::Srgb8)?;
+    let (w, h) = (r.width as u32, r.height as u32);
+    let img = match inspect {
+        None => r.read_image(),
+        Some((Inspect::Stencil, None)) => gloss::renderer::stencil_image(&r.read_stencil(), w, h),
+        Some((Inspect::Stencil, Some(pass))) => {
+            let stencil = r.stencil_after(&scene.camera, pass)?;
+            gloss::renderer::stencil_image(&stencil, w, h)
+        }
+    };
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
@@ -167,7 +197,7 @@ fn run(cli: Cli) -> Result<()> {
                 let scene = Scene::load_with(&scene_path, &cli.set)?;
                 let out = std::env::current_dir()?.join(format!("gloss-{}.png", scene.name));
                 let backend = headless_backend(cli.backend)?;
-                render_to_png(&scene, backend, cli.debug, &out)?;
+                render_to_png(&scene, backend, cli.debug, &out, None)?;
                 println!(
                     "no display: rendered {} headless ({backend}) to {}",
                     scene_path.display(),
@@ -183,6 +213,8 @@ fn run(cli: Cli) -> Result<()> {
             path,
             shading,
             lights,
+            inspect,
+            after,
         }) => {
             let mut s = load_scene(&scene, &cli.set, path, lights)?;
             if let Some(sh) = shading {
@@ -191,7 +223,13 @@ fn run(cli: Cli) -> Result<()> {
             if let Some(sz) = size {
                 s.render.size = sz;
             }
-            render_to_png(&s, headless_backend(cli.backend)?, cli.debug, &output)?;
+            render_to_png(
+                &s,
+                headless_backend(cli.backend)?,
+                cli.debug,
+                &output,
+                inspect.map(|i| (i, after)),
+            )?;
             println!("wrote {}", output.display());
             Ok(())
         }

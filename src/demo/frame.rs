@@ -71,6 +71,28 @@ impl Demo {
                         1.0,
                         fb,
                     ),
+                    _ if v.stencil => {
+                        let r = &run.renderer;
+                        let (sw, sh) = (r.width as u32, r.height as u32);
+                        let img = crate::renderer::stencil_image(&r.read_stencil(), sw, sh);
+                        let img = image::imageops::flip_vertical(&img);
+                        let texture = crate::gl::texture::Texture::from_rgba8(
+                            &run.ctx.gl,
+                            sw,
+                            sh,
+                            img.as_raw(),
+                            false,
+                            crate::gl::texture::Sampling::NEAREST_CLAMP,
+                        )?;
+                        run.inspector.draw_texture(
+                            &run.ctx.gl,
+                            Some(texture.id),
+                            inspector::Mode::Color { encode: false },
+                            &camera,
+                            1.0,
+                            fb,
+                        );
+                    }
                     (Some(which), _) => run.volume_views.draw(
                         &run.ctx.gl,
                         which,
@@ -193,6 +215,7 @@ pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
             attachment: "difference",
             difference: true,
             volumes: None,
+            stencil: false,
             ..first
         });
     }

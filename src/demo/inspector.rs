@@ -48,6 +48,9 @@ pub struct View {
     pub volumes: Option<VolumeView>,
     /// The difference image of "compare with reference" instead of an attachment.
     pub difference: bool,
+    /// The stencil values of the depth-stencil attachment (read back: GL 3.3
+    /// cannot sample stencil), each value its own colour.
+    pub stencil: bool,
 }
 
 impl View {
@@ -58,6 +61,13 @@ impl View {
         }
         if self.difference {
             return "difference to the forward reference, x8".to_string();
+        }
+        if self.stencil {
+            return format!(
+                "{}.stencil ({}): each value its own colour, 0 black",
+                self.target,
+                format_name(self.format)
+            );
         }
         let shows = match self.mode {
             Mode::Color { .. } => "colour",
@@ -90,6 +100,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 mode,
                 volumes: None,
                 difference: false,
+                stencil: false,
             };
             match name {
                 "normal_shininess" => {
@@ -114,7 +125,21 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 mode: Mode::Depth,
                 volumes: None,
                 difference: false,
+                stencil: false,
             });
+            // The output's stencil: where mirrors mark their regions.
+            if format == glow::DEPTH24_STENCIL8 && t.name == crate::frame::targets::OUTPUT {
+                v.push(View {
+                    target: t.name,
+                    attachment: "stencil",
+                    color_index: None,
+                    format,
+                    mode: Mode::Color { encode: false },
+                    volumes: None,
+                    difference: false,
+                    stencil: true,
+                });
+            }
         }
     }
     if has_volumes {
@@ -131,6 +156,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 mode: Mode::Color { encode: false },
                 volumes: Some(which),
                 difference: false,
+                stencil: false,
             });
         }
     }

@@ -62,7 +62,7 @@ impl Thumbnails {
         let fb = self.fb.as_ref().expect("made above");
         self.textures.resize_with(views.len(), || None);
         for (i, v) in views.iter().enumerate() {
-            if v.volumes.is_some() || v.difference {
+            if v.volumes.is_some() || v.difference || v.stencil {
                 self.textures[i] = None;
                 continue;
             }

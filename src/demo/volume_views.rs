@@ -69,7 +69,9 @@ impl VolumeViews {
         inspector: &Inspector,
         into: &Framebuffer,
     ) -> Result<()> {
-        let vp = renderer.frame_uniforms(camera).view_projection;
+        let vp = renderer
+            .frame_uniforms(camera, &crate::frame::views::View::camera())
+            .view_projection;
         match view {
             VolumeView::Wireframe => {
                 blit(gl, renderer.output(), into);

@@ -30,6 +30,11 @@ pub struct DrawItem {
     pub specular: Vec3,
     pub shininess: f32,
     pub texture: Option<usize>,
+    /// The object is a mirror: the mirror technique draws it (stencil/mirror.rs),
+    /// the passes that draw the world skip it.
+    pub mirror: bool,
+    /// A mirror's roughening texture (linear greyscale), if it has one.
+    pub roughness: Option<usize>,
 }
 
 impl DrawItem {
@@ -74,6 +79,13 @@ impl DrawList {
                     }
                 }),
             };
+            let roughness = match o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
+                None => None,
+                Some(p) => {
+                    textures.push(Texture::load(gl, p, false, Sampling::TRILINEAR_REPEAT)?);
+                    Some(textures.len() - 1)
+                }
+            };
             items.push(DrawItem {
                 mesh,
                 material: o.material,
@@ -84,6 +96,8 @@ impl DrawList {
                 specular: m.specular,
                 shininess: m.shininess,
                 texture,
+                mirror: o.mirror.is_some(),
+                roughness,
             });
         }
         Ok(DrawList {

@@ -11,6 +11,7 @@
 //! - `targets`: the render targets the plan names, allocated and sized.
 //! - `meshes`: the meshes every screen or volume pass draws.
 //! - `timing`: pass times around glFinish.
+//! - `views`: the camera's view and the reflected views mirrors add.
 
 pub mod draw_list;
 pub mod gbuffer;
@@ -21,5 +22,6 @@ pub mod targets;
 pub mod technique;
 pub mod timing;
 pub mod uniforms;
+pub mod views;
 
-pub use technique::{Frame, Programs, RunPasses, Technique};
+pub use technique::{Frame, FrameOrder, Programs, RunPasses, Stage, Technique};

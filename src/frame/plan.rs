@@ -10,7 +10,8 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::targets::TargetDesc;
-use crate::frame::technique::Technique;
+use crate::frame::technique::{FrameOrder, Stage, Technique};
+use crate::frame::views::View;
 use crate::scene::{RenderPath, Scene};
 
 #[derive(Clone, Debug, PartialEq)]
@@ -26,6 +27,12 @@ pub struct Pass {
     pub code: &'static str,
     /// Index of its technique in the registry the plan was made from.
     pub technique: usize,
+    /// Index of the view it draws for in `FramePlan::views` (0: the camera).
+    pub view: usize,
+    /// What one of several alike passes is about (a mirror's object index).
+    pub item: usize,
+    /// A number the pass needs (the stencil value a mirror pass writes).
+    pub value: u32,
 }
 
 impl Pass {
@@ -43,12 +50,29 @@ impl Pass {
             draws,
             code,
             technique: 0,
+            view: 0,
+            item: 0,
+            value: 0,
         }
     }
 
     /// The same pass, as step `step` of its technique.
     pub fn step(self, step: u32) -> Pass {
         Pass { step, ..self }
+    }
+
+    /// The same pass, about `item`, with `value`.
+    pub fn about(self, item: usize, value: u32) -> Pass {
+        Pass {
+            item,
+            value,
+            ..self
+        }
+    }
+
+    /// The same pass, drawing for view `view`.
+    pub fn for_view(self, view: usize) -> Pass {
+        Pass { view, ..self }
     }
 }
 
@@ -57,15 +81,57 @@ pub struct FramePlan {
     pub path: RenderPath,
     pub targets: Vec<TargetDesc>,
     pub passes: Vec<Pass>,
+    /// The views the world is drawn for: the camera's first.
+    pub views: Vec<View>,
 }
 
 impl FramePlan {
     /// Ask every technique of `registry`, in order, for its passes and targets.
     /// Two techniques may name the same target only if they describe it alike.
+    ///
+    /// The world techniques' passes run once per `Stage::World` of the
+    /// technique that orders the frame (mirrors), or once from the camera.
     pub fn new(scene: &Scene, lights: &FrameLights, registry: &[&Technique]) -> FramePlan {
         let mut targets: Vec<TargetDesc> = Vec::new();
+        let ordering = registry.iter().enumerate().find_map(|(i, t)| {
+            let order = (t.order?)(scene, lights)?;
+            Some((i, order))
+        });
+        let (director, order) = match ordering {
+            Some((i, order)) => (Some(i), order),
+            None => (
+                None,
+                FrameOrder {
+                    views: vec![View::camera()],
+                    stages: vec![Stage::World(0)],
+                },
+            ),
+        };
+        let world: Vec<(usize, Vec<Pass>)> = registry
+            .iter()
+            .enumerate()
+            .filter(|&(i, _)| Some(i) != director)
+            .map(|(i, t)| (i, (t.passes)(scene, lights)))
+            .collect();
         let mut passes = Vec::new();
-        for (index, t) in registry.iter().enumerate() {
+        for stage in order.stages {
+            match stage {
+                Stage::World(view) => {
+                    for (index, ps) in &world {
+                        passes.extend(ps.iter().map(|p| Pass {
+                            technique: *index,
+                            view,
+                            ..p.clone()
+                        }));
+                    }
+                }
+                Stage::Own(p) => passes.push(Pass {
+                    technique: director.expect("only an ordering technique has stages"),
+                    ..p
+                }),
+            }
+        }
+        for t in registry {
             for target in (t.targets)(scene, lights) {
                 match targets.iter().find(|d| d.name == target.name) {
                     Some(same) => assert_eq!(
@@ -76,16 +142,13 @@ impl FramePlan {
                     None => targets.push(target),
                 }
             }
-            passes.extend((t.passes)(scene, lights).into_iter().map(|p| Pass {
-                technique: index,
-                ..p
-            }));
         }
         targets.push(TargetDesc::output());
         FramePlan {
             path: scene.render.path,
             targets,
             passes,
+            views: order.views,
         }
     }
 
@@ -105,11 +168,23 @@ impl std::fmt::Display for FramePlan {
         for t in &self.targets {
             writeln!(f, "  {:<20} {}", t.name, t.attachments().join(", "))?;
         }
+        if self.views.len() > 1 {
+            writeln!(f, "views:")?;
+            for (i, v) in self.views.iter().enumerate() {
+                writeln!(f, "  {i}. {}", v.name)?;
+            }
+        }
         writeln!(f, "passes:")?;
         for (i, p) in self.passes.iter().enumerate() {
+            // With several views, say which one each pass draws for.
+            let view = if self.views.len() > 1 {
+                format!(" (view {})", p.view)
+            } else {
+                String::new()
+            };
             writeln!(
                 f,
-                "  {}. {:<16} -> {:<20} {}  [{}]",
+                "  {}. {:<16} -> {:<20} {}{view}  [{}]",
                 i + 1,
                 p.name,
                 p.target,

@@ -14,6 +14,7 @@ use crate::frame::meshes::FrameMeshes;
 use crate::frame::plan::Pass;
 use crate::frame::targets::{TargetDesc, Targets};
 use crate::frame::uniforms::FrameUniforms;
+use crate::frame::views::View;
 use crate::gl::Gl;
 use crate::gl::program::{Program, Sources};
 use crate::scene::Scene;
@@ -42,6 +43,28 @@ pub struct Technique {
     pub targets: fn(&Scene, &FrameLights) -> Vec<TargetDesc>,
     /// Build its programs.
     pub create: fn(&Programs) -> Result<Box<dyn RunPasses>>,
+    /// A technique that draws the world more than once (mirrors) orders the
+    /// frame: its views, and its own passes interleaved with
+    /// `Stage::World(view)`, where every other technique's passes run for
+    /// that view. None (every other technique): the frame is the world
+    /// drawn once, from the camera. At most one technique orders a frame.
+    pub order: Option<fn(&Scene, &FrameLights) -> Option<FrameOrder>>,
+}
+
+/// The frame as a technique that draws the world several times orders it.
+#[derive(Clone, Debug)]
+pub struct FrameOrder {
+    pub views: Vec<View>,
+    pub stages: Vec<Stage>,
+}
+
+#[derive(Clone, Debug)]
+pub enum Stage {
+    /// The world drawn for view `views[i]`: every world technique's passes.
+    World(usize),
+    /// One of the ordering technique's own passes (`Pass::view` says for
+    /// which view it draws).
+    Own(Pass),
 }
 
 /// A technique with its programs built: runs one of its passes.
@@ -71,7 +94,10 @@ impl Programs<'_> {
 pub struct Frame<'a> {
     pub gl: &'a glow::Context,
     pub scene: &'a Scene,
+    /// This pass's view's uniforms (the camera's, or reflected).
     pub uniforms: &'a FrameUniforms,
+    /// The view the pass draws for (src/frame/views.rs).
+    pub view: &'a View,
     pub draws: &'a DrawList,
     pub lights: &'a FrameLights,
     pub targets: &'a Targets,

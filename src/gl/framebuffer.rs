@@ -129,6 +129,12 @@ impl Framebuffer {
         out
     }
 
+    /// Read the stencil buffer (GL_STENCIL_INDEX), one byte per pixel, row 0
+    /// the top (PNG order).
+    pub fn read_stencil_top_down(&self) -> Vec<u8> {
+        read_stencil_top_down(&self.gl, self.id, self.width, self.height)
+    }
+
     /// Read colour attachment `index` as RGBA8, flipped so row 0 is the top (PNG order).
     pub fn read_rgba8_top_down(&self, index: u32) -> image::RgbaImage {
         let (w, h) = (self.width as usize, self.height as usize);
@@ -185,4 +191,35 @@ impl Drop for Framebuffer {
             super::live::freed(super::live::Kind::Framebuffer);
         }
     }
+}
+
+/// Read framebuffer `fb`'s stencil buffer (`width` x `height`), one byte per
+/// pixel, row 0 the top.
+pub fn read_stencil_top_down(
+    gl: &glow::Context,
+    fb: glow::Framebuffer,
+    width: i32,
+    height: i32,
+) -> Vec<u8> {
+    let mut raw = vec![0u8; (width.max(0) * height.max(0)) as usize];
+    unsafe {
+        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(fb));
+        gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
+        gl.read_pixels(
+            0,
+            0,
+            width,
+            height,
+            glow::STENCIL_INDEX,
+            glow::UNSIGNED_BYTE,
+            glow::PixelPackData::Slice(Some(&mut raw)),
+        );
+        gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
+        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
+    }
+    raw.chunks(width.max(1) as usize)
+        .rev()
+        .flatten()
+        .copied()
+        .collect()
 }

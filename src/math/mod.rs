@@ -27,6 +27,8 @@
 //! you look down the axis from its positive end toward the origin (x→y about
 //! z, y→z about x, z→x about y), as glam's `Mat4::from_rotation_*` do.
 
+pub mod reflection;
+
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 /// Builds a matrix from its four rows, written as they appear on paper.

@@ -5,7 +5,7 @@
 
 mod output;
 
-pub use output::Output;
+pub use output::{Output, stencil_color, stencil_image};
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, max_lights};
@@ -14,6 +14,7 @@ use crate::frame::plan::{FramePlan, Pass};
 use crate::frame::targets::{OUTPUT, TargetDesc, Targets};
 use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
 use crate::frame::uniforms::FrameUniforms;
+use crate::frame::views::View;
 use crate::frame::{Frame, Programs, RunPasses};
 use crate::gl::buffer::Buffer;
 use crate::gl::debug::DebugLog;
@@ -231,10 +232,14 @@ impl Renderer {
         self.targets.get(OUTPUT)
     }
 
-    pub fn frame_uniforms(&self, camera: &Camera) -> FrameUniforms {
+    /// The camera's uniforms, for `view`: a reflected view draws the world
+    /// through `VP * R` and lights it with the eye reflected back, `R^-1 *
+    /// eye` (src/frame/views.rs says why).
+    pub fn frame_uniforms(&self, camera: &Camera, for_view: &View) -> FrameUniforms {
         let view = camera.view();
         let projection = camera.projection(self.width as f32 / self.height as f32);
-        let vp = projection * view;
+        let r = for_view.reflection;
+        let vp = projection * view * r;
         let srgb = self.output_kind == Output::Srgb8;
         let bg = self.scene.render.background;
         FrameUniforms {
@@ -242,7 +247,7 @@ impl Renderer {
             projection,
             view_projection: vp,
             inverse_view_projection: vp.inverse(),
-            eye: camera.eye,
+            eye: r.inverse().transform_point3(camera.eye),
             light_count: self.scene.lights.len() as i32,
             lights_ubo: self.lights_ubo.id,
             output_srgb: srgb,
@@ -266,18 +271,21 @@ impl Renderer {
         camera: &Camera,
         after_pass: &mut dyn FnMut(&Pass),
     ) -> Result<()> {
-        let uniforms = self.frame_uniforms(camera);
-        let frame = Frame {
-            gl: &self.gl,
-            scene: &self.scene,
-            uniforms: &uniforms,
-            draws: &self.draws,
-            lights: &self.lights,
-            targets: &self.targets,
-            meshes: &self.meshes,
-        };
+        let uniforms: Vec<FrameUniforms> = (self.plan.views.iter())
+            .map(|v| self.frame_uniforms(camera, v))
+            .collect();
         let mut timer = PassTimer::new(&self.gl, self.timing, self.gpu_timers);
         for pass in &self.plan.passes {
+            let frame = Frame {
+                gl: &self.gl,
+                scene: &self.scene,
+                uniforms: &uniforms[pass.view],
+                view: &self.plan.views[pass.view],
+                draws: &self.draws,
+                lights: &self.lights,
+                targets: &self.targets,
+                meshes: &self.meshes,
+            };
             let technique = self.techniques[pass.technique].as_ref();
             technique.expect("built for its pass").run(pass, &frame);
             timer.mark(pass.name);

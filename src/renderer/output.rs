@@ -23,6 +23,35 @@ impl Output {
     }
 }
 
+/// The stencil inspector's picture: value 0 black, each other value its own
+/// colour (hues a golden angle apart, so neighbouring values differ), top row
+/// first as `Renderer::read_stencil` gives them.
+pub fn stencil_image(values: &[u8], width: u32, height: u32) -> image::RgbaImage {
+    image::RgbaImage::from_fn(width, height, |x, y| {
+        let v = values[(y * width + x) as usize];
+        image::Rgba(stencil_color(v))
+    })
+}
+
+/// The colour of stencil value `v` in the inspector.
+pub fn stencil_color(v: u8) -> [u8; 4] {
+    if v == 0 {
+        return [0, 0, 0, 255];
+    }
+    let hue = (f32::from(v) * 137.508).rem_euclid(360.0) / 60.0;
+    let x = 1.0 - (hue.rem_euclid(2.0) - 1.0).abs();
+    let (r, g, b) = match hue as u32 {
+        0 => (1.0, x, 0.0),
+        1 => (x, 1.0, 0.0),
+        2 => (0.0, 1.0, x),
+        3 => (0.0, x, 1.0),
+        4 => (x, 0.0, 1.0),
+        _ => (1.0, 0.0, x),
+    };
+    let c = |c: f32| (55.0 + 200.0 * c) as u8;
+    [c(r), c(g), c(b), 255]
+}
+
 impl Renderer {
     /// The output as an sRGB PNG-ready image (top row first).
     pub fn read_image(&self) -> image::RgbaImage {
@@ -38,6 +67,38 @@ impl Renderer {
                 })
             }
         }
+    }
+
+    /// The output's stencil buffer, one value per pixel, top row first
+    /// (the stencil inspector; mirrors mark their regions there).
+    pub fn read_stencil(&self) -> Vec<u8> {
+        self.output().read_stencil_top_down()
+    }
+
+    /// Render a frame and return the output's stencil buffer as it was
+    /// right after pass number `pass` (1-based, as `gloss plan` numbers
+    /// them).
+    pub fn stencil_after(
+        &mut self,
+        camera: &crate::scene::Camera,
+        pass: usize,
+    ) -> anyhow::Result<Vec<u8>> {
+        let count = self.plan.passes.len();
+        if pass == 0 || pass > count {
+            anyhow::bail!(
+                "--after {pass}: the frame has passes 1 to {count} (gloss plan lists them)"
+            );
+        }
+        let (gl, fb) = (self.gl.clone(), self.output().id);
+        let (w, h) = (self.width, self.height);
+        let (mut n, mut stencil) = (0, Vec::new());
+        self.render_inspected(camera, &mut |_| {
+            n += 1;
+            if n == pass {
+                stencil = crate::gl::framebuffer::read_stencil_top_down(&gl, fb, w, h);
+            }
+        })?;
+        Ok(stencil)
     }
 
     /// The output as linear RGBA floats, bottom row first (Linear32F output only

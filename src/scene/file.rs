@@ -2,7 +2,8 @@
 //! serde's defaults for every key that may be left out. `resolve` checks these
 //! values and turns them into a `Scene`.
 
-use super::settings::{Accumulation, DepthFunc, RenderPath, Shading};
+use super::mirrors::MirrorFile;
+use super::settings::{Accumulation, DepthFunc, MirrorOrder, RenderPath, Shading};
 use serde::Deserialize;
 use std::collections::HashMap;
 
@@ -69,6 +70,13 @@ pub(super) struct RenderFile {
     pub(super) cutoff: f32,
     pub(super) stencil_volumes: bool,
     pub(super) accumulation: Accumulation,
+    pub(super) mirror_order: MirrorOrder,
+    /// How many mirrors deep reflections go (1: mirrors seen in a mirror are blank).
+    pub(super) mirror_depth: u32,
+    /// Cut away what lies behind a mirror in its reflection (GL_CLIP_DISTANCE0).
+    pub(super) mirror_clip: bool,
+    /// glFrontFace(GL_CW) while drawing a reflection (it reverses the winding).
+    pub(super) mirror_winding: bool,
 }
 
 impl Default for RenderFile {
@@ -83,6 +91,10 @@ impl Default for RenderFile {
             cutoff: 5.0 / 256.0,
             stencil_volumes: false,
             accumulation: Accumulation::Rgba16f,
+            mirror_order: MirrorOrder::NormalFirst,
+            mirror_depth: 1,
+            mirror_clip: true,
+            mirror_winding: true,
         }
     }
 }
@@ -182,6 +194,8 @@ pub(super) struct ObjectFile {
     #[serde(default = "unit_scale")]
     pub(super) scale: [f32; 3],
     pub(super) parent: Option<String>,
+    /// This object is a planar mirror (src/scene/mirrors.rs).
+    pub(super) mirror: Option<MirrorFile>,
 }
 
 fn unit_scale() -> [f32; 3] {

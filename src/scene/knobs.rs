@@ -6,7 +6,7 @@
 //! lists the knobs it reads in its registration.
 
 use super::RenderSettings;
-use super::settings::{Accumulation, DepthFunc, RenderPath, Shading};
+use super::settings::{Accumulation, DepthFunc, MirrorOrder, RenderPath, Shading};
 use glam::Vec3;
 
 /// What a knob holds.
@@ -14,6 +14,8 @@ use glam::Vec3;
 pub enum Value {
     Bool(bool),
     Number(f32),
+    /// A whole number.
+    Count(u32),
     /// An index into the knob's `choices`.
     Choice(usize),
     Color(Vec3),
@@ -31,6 +33,11 @@ pub enum Kind {
         log: bool,
     },
     Choice(&'static [&'static str]),
+    /// A whole number in `min..=max`.
+    Count {
+        min: u32,
+        max: u32,
+    },
     /// A linear RGB colour, each channel >= 0.
     Color,
 }
@@ -52,6 +59,7 @@ impl Knob {
         match ((self.get)(r), self.kind) {
             (Value::Bool(b), _) => b.to_string(),
             (Value::Number(x), _) => format!("{x:?}"),
+            (Value::Count(n), _) => n.to_string(),
             (Value::Choice(i), Kind::Choice(words)) => format!("\"{}\"", words[i]),
             (Value::Color(c), _) => format!("[{:?}, {:?}, {:?}]", c.x, c.y, c.z),
             (Value::Choice(i), _) => i.to_string(),
@@ -167,6 +175,61 @@ pub static BACKGROUND: Knob = Knob {
     },
 };
 
+pub static MIRROR_ORDER: Knob = Knob {
+    key: "render.mirror_order",
+    label: "mirror order",
+    help: "notes 05: normal first (several mirrors, recursion) or reflected first (one mirror)",
+    kind: Kind::Choice(MirrorOrder::WORDS),
+    get: |r| Value::Choice(index(MirrorOrder::ALL, r.mirror_order)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.mirror_order = MirrorOrder::ALL[i];
+        }
+    },
+};
+
+pub static MIRROR_DEPTH: Knob = Knob {
+    key: "render.mirror_depth",
+    label: "mirror depth",
+    help: "how many mirrors deep a reflection goes (mirrors seen in mirrors)",
+    kind: Kind::Count {
+        min: 1,
+        max: super::resolve::MAX_MIRROR_DEPTH,
+    },
+    get: |r| Value::Count(r.mirror_depth),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.mirror_depth = n;
+        }
+    },
+};
+
+pub static MIRROR_CLIP: Knob = Knob {
+    key: "render.mirror_clip",
+    label: "clip behind mirror",
+    help: "notes 05: a clip plane (gl_ClipDistance[0]) cuts away what lies behind the mirror; off shows it in the reflection",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.mirror_clip),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.mirror_clip = b;
+        }
+    },
+};
+
+pub static MIRROR_WINDING: Knob = Knob {
+    key: "render.mirror_winding",
+    label: "mirror winding fix",
+    help: "notes 05 \"Small Problem\": glFrontFace(GL_CW) while drawing a reflection; off culls the wrong faces",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.mirror_winding),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.mirror_winding = b;
+        }
+    },
+};
+
 /// Every knob, in the order the panel shows the frame-wide ones.
 pub static ALL: &[&Knob] = &[
     &PATH,
@@ -177,6 +240,10 @@ pub static ALL: &[&Knob] = &[
     &ACCUMULATION,
     &AMBIENT,
     &BACKGROUND,
+    &MIRROR_ORDER,
+    &MIRROR_DEPTH,
+    &MIRROR_CLIP,
+    &MIRROR_WINDING,
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

@@ -13,12 +13,14 @@ mod file;
 pub mod knobs;
 mod light_grid;
 mod lights;
+mod mirrors;
 mod resolve;
 mod save;
 mod settings;
 
 pub use lights::validate_attenuation;
-pub use settings::{Accumulation, DepthFunc, RenderPath, Shading};
+pub use mirrors::{Mirror, flat};
+pub use settings::{Accumulation, DepthFunc, MirrorOrder, RenderPath, Shading};
 
 use crate::assets;
 use crate::math;
@@ -78,6 +80,13 @@ pub struct RenderSettings {
     pub stencil_volumes: bool,
     /// Internal format of the light accumulation target (RGBA16F or RGBA32F).
     pub accumulation: Accumulation,
+    /// Planar mirrors (notes 05): the order of their passes, how deep
+    /// reflections recurse, the clip plane and the winding fix (toggles that
+    /// show what goes wrong without them).
+    pub mirror_order: MirrorOrder,
+    pub mirror_depth: u32,
+    pub mirror_clip: bool,
+    pub mirror_winding: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -154,6 +163,8 @@ pub struct Object {
     pub parent: Option<usize>,
     /// Model matrix including every parent's (`update_models`).
     pub model: Mat4,
+    /// Set when the object is a planar mirror.
+    pub mirror: Option<Mirror>,
 }
 
 impl Object {
@@ -199,6 +210,15 @@ pub struct Scene {
     pub grid_lights: Option<usize>,
     pub materials: Vec<Material>,
     pub objects: Vec<Object>,
+}
+
+impl Scene {
+    /// The indices of the objects that are mirrors, in file order.
+    pub fn mirrors(&self) -> Vec<usize> {
+        (0..self.objects.len())
+            .filter(|&i| self.objects[i].mirror.is_some())
+            .collect()
+    }
 }
 
 /// Set `table.key = value` in a parsed scene file, making tables as needed.

@@ -26,6 +26,10 @@ pub(super) fn non_negative(key: &str, v: &[f32]) -> Result<()> {
     Ok(())
 }
 
+/// The deepest mirror recursion a scene may ask for: each level is another
+/// pass over the world, and the stencil buffer's 8 bits count the levels.
+pub const MAX_MIRROR_DEPTH: u32 = 8;
+
 /// Checks every section of `f` (read from `path`) and builds the [`Scene`].
 pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
     let base = path.parent().unwrap_or(Path::new("."));
@@ -40,6 +44,22 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
     let lights = super::lights::lights(&f)?;
     let (materials, material_index) = materials(&f, base)?;
     let objects = objects(&f, &material_index, base)?;
+    let mirrors = objects.iter().filter(|o| o.mirror.is_some()).count();
+    // Each mirror has its own stencil value and one more per level inside it.
+    if mirrors * (render.mirror_depth as usize + 1) > 255 {
+        bail!(
+            "{mirrors} mirrors x (render.mirror_depth {} + 1) stencil values do not fit in 8 stencil bits (255)",
+            render.mirror_depth
+        );
+    }
+    if render.mirror_order == super::MirrorOrder::ReflectedFirst
+        && (mirrors > 1 || render.mirror_depth > 1)
+    {
+        bail!(
+            "render.mirror_order: \"reflected_first\" draws one mirror and no mirror in a mirror (notes 05, \"Reflected Scene First (issues)\"); this scene has {mirrors} mirrors and mirror_depth = {}: use \"normal_first\"",
+            render.mirror_depth
+        );
+    }
 
     Ok(Scene {
         name,
@@ -149,6 +169,18 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         stencil_volumes: r.stencil_volumes,
         accumulation: r.accumulation,
+        mirror_order: r.mirror_order,
+        mirror_depth: {
+            if !(1..=MAX_MIRROR_DEPTH).contains(&r.mirror_depth) {
+                bail!(
+                    "render.mirror_depth: expected 1..={MAX_MIRROR_DEPTH} mirrors deep, found {}",
+                    r.mirror_depth
+                );
+            }
+            r.mirror_depth
+        },
+        mirror_clip: r.mirror_clip,
+        mirror_winding: r.mirror_winding,
     })
 }
 
@@ -250,7 +282,12 @@ fn objects(
         if object_names.insert(name.clone(), i).is_some() {
             bail!("{}: two objects are named \"{name}\"", key("name"));
         }
-        locals.push((name, mesh, material));
+        let mirror = o
+            .mirror
+            .as_ref()
+            .map(|m| super::mirrors::mirror(&key("mirror"), m, &mesh, base))
+            .transpose()?;
+        locals.push((name, mesh, material, mirror));
     }
     let mut objects = Vec::new();
     for (i, o) in f.objects.iter().enumerate() {
@@ -280,16 +317,24 @@ fn objects(
             scale: Vec3::from(o.scale),
             parent,
             model: glam::Mat4::IDENTITY,
+            mirror: locals[i].3.clone(),
         });
     }
     super::update_models(&mut objects);
+    for (i, o) in objects.iter().enumerate() {
+        if o.mirror.is_some() && o.mirror_plane().is_none() {
+            bail!(
+                "objects[{i}]: its scale flattens the mirror's normal to zero: the mirror has no plane"
+            );
+        }
+    }
     Ok(objects)
 }
 
 /// A path written in a scene file: relative to the file, unless it names a
 /// shipped file (`embedded:scenes/...`, as "save as" writes for a shipped
 /// scene's assets).
-fn relative_to(base: &Path, written: &str) -> std::path::PathBuf {
+pub(super) fn relative_to(base: &Path, written: &str) -> std::path::PathBuf {
     if written.starts_with(assets::EMBEDDED) {
         std::path::PathBuf::from(written)
     } else {

@@ -104,6 +104,19 @@ impl DepthFunc {
 }
 
 setting! {
+    /// The order of a planar mirror's passes (notes 05).
+    pub enum MirrorOrder {
+        /// "Rendering Normal First": the scene, then each mirror's
+        /// stencil, then the reflected world inside it. Handles several
+        /// mirrors and recursion.
+        NormalFirst = "normal_first",
+        /// "Rendering Reflected First": the reflected world, the mirror's
+        /// stencil and a clear outside it, then the scene. One mirror.
+        ReflectedFirst = "reflected_first",
+    }
+}
+
+setting! {
     /// The internal format of the light accumulation target.
     pub enum Accumulation {
         /// Half floats: enough for tens of lights per pixel.

@@ -11,6 +11,7 @@
 
 pub mod deferred;
 pub mod lighting;
+pub mod stencil;
 
 use crate::frame::Technique;
 use crate::frame::lights::FrameLights;
@@ -26,6 +27,7 @@ pub static ALL: &[&Technique] = &[
     &deferred::stencil_light_volumes::STENCIL_LIGHT_VOLUMES,
     &deferred::deferred_lighting::DEFERRED_LIGHTING,
     &deferred::composite::COMPOSITE,
+    &stencil::mirror::MIRROR,
 ];
 
 /// The frame plan of `scene`: the registered techniques' passes and targets.

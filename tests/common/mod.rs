@@ -108,6 +108,7 @@ pub fn gl_state(gl: &glow::Context) -> Vec<(String, i64)> {
             ("DEPTH_CLAMP", glow::DEPTH_CLAMP),
             ("FRAMEBUFFER_SRGB", glow::FRAMEBUFFER_SRGB),
             ("POLYGON_OFFSET_FILL", glow::POLYGON_OFFSET_FILL),
+            ("CLIP_DISTANCE0", glow::CLIP_DISTANCE0),
         ] {
             v.push((name.to_string(), gl.is_enabled(cap) as i64));
         }

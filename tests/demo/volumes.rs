@@ -44,7 +44,9 @@ fn overdraw_counts_the_volumes_over_each_pixel() {
         max >= 1.0 && max <= volumes,
         "largest count {max}, {volumes} volumes"
     );
-    let vp = r.frame_uniforms(&scene.camera).view_projection;
+    let vp = r
+        .frame_uniforms(&scene.camera, &gloss::frame::views::View::camera())
+        .view_projection;
     for l in scene.lights.iter().filter(|l| l.kind == LightKind::Point) {
         let ndc = vp.project_point3(l.position);
         let (x, y) = (

@@ -9,6 +9,7 @@
 
 mod cli;
 mod gl_version;
+mod mirror;
 mod obj;
 mod png;
 mod scene;

@@ -8,7 +8,7 @@ use std::path::Path;
 /// Write `text` as `scene.toml` in a fresh directory, check that both
 /// `Scene::load` and `gloss plan` refuse it with a message holding `words`
 /// (and the file name); return the library's message.
-fn scene_fails(test: &str, text: &str, words: &[&str]) -> String {
+pub fn scene_fails(test: &str, text: &str, words: &[&str]) -> String {
     let dir = temp_dir(test);
     scene_in_dir_fails(&dir, text, words)
 }

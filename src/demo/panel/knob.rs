@@ -18,6 +18,9 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
             (Kind::Number { min, max, log }, Value::Number(x)) => {
                 ui.add(egui::Slider::new(x, min..=max).logarithmic(log));
             }
+            (Kind::Count { min, max }, Value::Count(n)) => {
+                ui.add(egui::Slider::new(n, min..=max));
+            }
             (Kind::Choice(words), Value::Choice(i)) => {
                 for (j, w) in words.iter().enumerate() {
                     ui.selectable_value(i, j, *w);

@@ -5,8 +5,15 @@
 //! colour. Ends deferred shading and light volumes; the light pre-pass has
 //! its own combine pass (deferred_lighting.rs).
 //!
-//! GL state: no depth test (one triangle covers every pixel exactly once,
-//! notes 02); textures on the G-buffer units and unit::LIGHT, unbound after.
+//! It also copies the G-buffer's depth into the output (gl_FragDepth), so
+//! that what draws after it can test against the scene. For a view drawn
+//! into a mirror (stencil/mirror.rs) it writes only inside the mirror's
+//! stencil region, and only where nothing nearer is there already.
+//!
+//! GL state: depth test GL_ALWAYS (one triangle covers every pixel exactly
+//! once, notes 02), or GL_LEQUAL and the stencil test for a reflected view;
+//! textures on the G-buffer units and unit::LIGHT, unbound after; restores
+//! no depth or stencil test, GL_LESS.
 
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
@@ -32,6 +39,7 @@ pub const COMPOSITE: Technique = Technique {
     passes,
     targets,
     create,
+    order: None,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
@@ -72,7 +80,18 @@ impl RunPasses for Composite {
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
             gl.viewport(0, 0, output.width, output.height);
-            gl.disable(glow::DEPTH_TEST);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_mask(true);
+            if f.view.clears {
+                gl.depth_func(glow::ALWAYS);
+            } else {
+                gl.depth_func(glow::LEQUAL);
+            }
+            if let Some(region) = f.view.stencil {
+                gl.enable(glow::STENCIL_TEST);
+                gl.stencil_func(glow::EQUAL, region.into(), 0xff);
+                gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
+            }
             p.use_program();
             gbuffer::bind_for_reading(gl, p, f.targets.get(gbuffer::NAME), u);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
@@ -91,6 +110,10 @@ impl RunPasses for Composite {
             gl.active_texture(glow::TEXTURE0);
             gbuffer::unbind(gl);
             gl.use_program(None);
+            gl.stencil_func(glow::ALWAYS, 0, 0xff);
+            gl.disable(glow::STENCIL_TEST);
+            gl.depth_func(glow::LESS);
+            gl.disable(glow::DEPTH_TEST);
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
         }
     }

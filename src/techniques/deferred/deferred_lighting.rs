@@ -49,6 +49,7 @@ pub const DEFERRED_LIGHTING: Technique = Technique {
     passes,
     targets,
     create,
+    order: None,
 };
 
 /// The steps of this technique's passes.
@@ -134,29 +135,47 @@ impl DeferredLighting {
         let light = f.targets.find(LIGHT_ACCUMULATION);
         let (w, h) = (output.width, output.height);
         unsafe {
-            // The G-buffer's depth becomes the output's depth.
-            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(gbuf.id));
-            gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, Some(output.id));
-            gl.blit_framebuffer(
-                0,
-                0,
-                w,
-                h,
-                0,
-                0,
-                w,
-                h,
-                glow::DEPTH_BUFFER_BIT,
-                glow::NEAREST,
-            );
+            if f.view.clears {
+                // The G-buffer's depth becomes the output's depth.
+                gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(gbuf.id));
+                gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, Some(output.id));
+                gl.blit_framebuffer(
+                    0,
+                    0,
+                    w,
+                    h,
+                    0,
+                    0,
+                    w,
+                    h,
+                    glow::DEPTH_BUFFER_BIT,
+                    glow::NEAREST,
+                );
+            }
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
             gl.viewport(0, 0, w, h);
             let bg = u.clear_color;
             gl.clear_color(bg.x, bg.y, bg.z, 1.0);
-            gl.clear(glow::COLOR_BUFFER_BIT);
             gl.enable(glow::DEPTH_TEST);
-            gl.depth_func(glow::LEQUAL);
-            gl.depth_mask(false);
+            if f.view.clears {
+                gl.clear(glow::COLOR_BUFFER_BIT);
+                gl.depth_func(glow::LEQUAL);
+                gl.depth_mask(false);
+            } else {
+                // A view drawn into a mirror (stencil/mirror.rs) keeps the
+                // image and the depth outside its region: an ordinary depth
+                // test there, against the depth the mirror cleared.
+                gl.depth_func(f.scene.render.depth_func.gl());
+                gl.depth_mask(true);
+            }
+            if let Some(region) = f.view.stencil {
+                gl.enable(glow::STENCIL_TEST);
+                gl.stencil_func(glow::EQUAL, region.into(), 0xff);
+                gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
+            }
+            if f.view.clip_plane.is_some() {
+                gl.enable(glow::CLIP_DISTANCE0);
+            }
             gl.enable(glow::CULL_FACE);
             gl.cull_face(glow::BACK);
 
@@ -168,20 +187,25 @@ impl DeferredLighting {
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_diffuse_light", unit::LIGHT as i32);
             p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
+            p.set_vec4("u_clip_plane", f.view.clip_uniform());
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[0].id));
             gl.active_texture(glow::TEXTURE0 + unit::SPECULAR_LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[1].id));
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in &f.draws.items {
-                // A mirroring model matrix turns counter-clockwise triangles clockwise.
-                gl.front_face(d.front_face());
+            for d in f.draws.items.iter().filter(|d| !d.mirror) {
+                // A mirroring model matrix, or a reflected view, turns
+                // counter-clockwise triangles clockwise.
+                gl.front_face(f.view.front_face(d.mirrored));
                 gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
                 f.draws.set_object_uniforms(p, d);
                 f.draws.mesh(d).draw();
             }
 
             gl.front_face(glow::CCW);
+            gl.disable(glow::CLIP_DISTANCE0);
+            gl.stencil_func(glow::ALWAYS, 0, 0xff);
+            gl.disable(glow::STENCIL_TEST);
             gl.bind_texture(glow::TEXTURE_2D, None);
             for u in [unit::LIGHT, unit::SPECULAR_LIGHT] {
                 gl.active_texture(glow::TEXTURE0 + u);

@@ -41,6 +41,7 @@ pub const DEFERRED_SHADING: Technique = Technique {
     passes,
     targets,
     create,
+    order: None,
 };
 
 fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {

@@ -32,6 +32,7 @@ pub const GBUFFER: Technique = Technique {
     passes,
     targets,
     create,
+    order: None,
 };
 
 /// Which G-buffer the scene's path fills: None (forward), full, or thin.
@@ -95,20 +96,27 @@ impl RunPasses for GBufferPass {
             gl.cull_face(glow::BACK);
             // Linear albedo and specular are encoded to sRGB as they are stored.
             gl.enable(glow::FRAMEBUFFER_SRGB);
+            // A reflected view (stencil/mirror.rs) cuts what lies behind its mirror.
+            if f.view.clip_plane.is_some() {
+                gl.enable(glow::CLIP_DISTANCE0);
+            }
 
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            p.set_vec4("u_clip_plane", f.view.clip_uniform());
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in &f.draws.items {
-                // A mirroring model matrix turns counter-clockwise triangles clockwise.
-                gl.front_face(d.front_face());
+            for d in f.draws.items.iter().filter(|d| !d.mirror) {
+                // A mirroring model matrix, or a reflected view, turns
+                // counter-clockwise triangles clockwise.
+                gl.front_face(f.view.front_face(d.mirrored));
                 gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
                 f.draws.set_object_uniforms(p, d);
                 f.draws.mesh(d).draw();
             }
 
             gl.front_face(glow::CCW);
+            gl.disable(glow::CLIP_DISTANCE0);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.disable(glow::FRAMEBUFFER_SRGB);

@@ -60,6 +60,7 @@ pub const LIGHT_VOLUMES: Technique = Technique {
     passes,
     targets,
     create,
+    order: None,
 };
 
 fn runs(scene: &Scene, lights: &FrameLights) -> bool {
@@ -201,6 +202,8 @@ pub fn draw_bounded_volumes(f: &Frame, p: &Program) {
     unsafe {
         gl.enable(glow::CULL_FACE);
         gl.cull_face(glow::FRONT);
+        // A reflected view turns the volumes' winding over.
+        gl.front_face(f.view.front_face(false));
         gl.depth_mask(false);
         gl.enable(glow::BLEND);
         gl.blend_func(glow::ONE, glow::ONE);
@@ -225,6 +228,7 @@ pub fn draw_bounded_volumes(f: &Frame, p: &Program) {
         gl.blend_func(glow::ONE, glow::ZERO);
         gl.disable(glow::BLEND);
         gl.depth_mask(true);
+        gl.front_face(glow::CCW);
         gl.cull_face(glow::BACK);
         gl.disable(glow::CULL_FACE);
     }

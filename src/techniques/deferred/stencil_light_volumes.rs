@@ -50,6 +50,7 @@ pub const STENCIL_LIGHT_VOLUMES: Technique = Technique {
     passes,
     targets,
     create,
+    order: None,
 };
 
 fn runs(scene: &Scene, lights: &FrameLights) -> bool {
@@ -102,6 +103,9 @@ fn draw_stencilled_volumes(f: &Frame, p: &Program) {
         gl.blend_func(glow::ONE, glow::ONE);
         gl.enable(glow::DEPTH_CLAMP);
         gl.cull_face(glow::FRONT);
+        // A reflected view turns the volumes' winding over: which faces
+        // are front decides which way the stencil counts.
+        gl.front_face(f.view.front_face(false));
     }
     for (i, light) in f.lights.lights.iter().enumerate() {
         let (mesh, model) = match light.volume {
@@ -140,6 +144,7 @@ fn draw_stencilled_volumes(f: &Frame, p: &Program) {
         gl.blend_func(glow::ONE, glow::ZERO);
         gl.disable(glow::BLEND);
         gl.depth_mask(true);
+        gl.front_face(glow::CCW);
         gl.cull_face(glow::BACK);
         gl.disable(glow::CULL_FACE);
     }

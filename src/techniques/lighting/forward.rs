@@ -11,9 +11,14 @@
 //! lit in a geometry shader), Gouraud (lit per vertex) and Phong (lit per
 //! fragment). This is the reference every deferred path is compared against.
 //!
+//! For a reflected view (notes 05, stencil/mirror.rs) the same pass draws
+//! the world reflected: without clearing, inside the mirror's stencil
+//! region, with a clip plane and the winding flipped (src/frame/views.rs).
+//!
 //! GL state: sets glDepthFunc(render.depth_func), depth writes, back-face
-//! culling, glFrontFace per object; restores GL_LESS, no depth test, no
-//! culling, GL_CCW.
+//! culling, glFrontFace per object, and for a reflected view the stencil
+//! test and GL_CLIP_DISTANCE0; restores GL_LESS, no depth test, no culling,
+//! GL_CCW, no stencil test, no clip distance.
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
@@ -50,6 +55,7 @@ pub const FORWARD: Technique = Technique {
     passes,
     targets,
     create,
+    order: None,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
@@ -121,9 +127,22 @@ impl RunPasses for Forward {
             gl.enable(glow::DEPTH_TEST);
             gl.depth_func(settings.depth_func.gl());
             gl.depth_mask(true);
-            gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
+            // A view drawn into a mirror (stencil/mirror.rs) keeps the image.
+            if f.view.clears {
+                gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
+            }
             gl.enable(glow::CULL_FACE);
             gl.cull_face(glow::BACK);
+            // A reflected view: only inside its mirror's stencil region, and
+            // only what lies in front of the mirror (notes 05).
+            if let Some(region) = f.view.stencil {
+                gl.enable(glow::STENCIL_TEST);
+                gl.stencil_func(glow::EQUAL, region.into(), 0xff);
+                gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
+            }
+            if f.view.clip_plane.is_some() {
+                gl.enable(glow::CLIP_DISTANCE0);
+            }
 
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
@@ -132,17 +151,22 @@ impl RunPasses for Forward {
             p.set_i32("u_light_count", u.light_count);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            p.set_vec4("u_clip_plane", f.view.clip_uniform());
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in &f.draws.items {
-                // A mirroring model matrix turns counter-clockwise triangles clockwise.
-                gl.front_face(d.front_face());
+            for d in f.draws.items.iter().filter(|d| !d.mirror) {
+                // A mirroring model matrix, or a reflected view, turns
+                // counter-clockwise triangles clockwise.
+                gl.front_face(f.view.front_face(d.mirrored));
                 gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
                 f.draws.set_object_uniforms(p, d);
                 f.draws.mesh(d).draw();
             }
 
             // Restore the state this pass changed.
+            gl.disable(glow::CLIP_DISTANCE0);
+            gl.stencil_func(glow::ALWAYS, 0, 0xff);
+            gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);

@@ -1,0 +1,397 @@
+//! Planar mirrors with the stencil buffer (notes 05, "Planar Reflections"
+//! to "Normal First Addendum").
+//!
+//! Rendering reflected first (one mirror; the slides' order):
+//! ```text
+//! 1. the reflected scene without the mirror, depth test on     World(reflected view)
+//! 2. colour off, stencil always/replace: draw the mirror;      step STENCIL_AND_CLEAR
+//!    stencil "outside the mirror": clear the colour there
+//! 3. colour on, stencil off: the scene without the mirror      World(camera)
+//! ```
+//! Rendering normal first (several mirrors, and mirrors in mirrors):
+//! ```text
+//! 1. the scene without the mirror                              World(camera)
+//! 2. clear the stencil, draw the mirror setting the stencil    step MARK
+//!    where the depth test passes
+//! 3. clear the depth inside the stencil only,                  step CLEAR_DEPTH
+//!    reflect the world and draw it with the stencil test       World(reflected view)
+//! ```
+//! then, for either order, the mirror's tint and roughening texture
+//! multiply the reflection (step SURFACE). Each mirror has its own stencil
+//! value; a mirror seen in a mirror is marked by incrementing its parent's
+//! value and unmarked by decrementing it again (step UNMARK), so nested
+//! reflections stay inside their parent's region.
+//!
+//! The reflection itself (R, the clip plane, glFrontFace(GL_CW)) is a view
+//! (src/frame/views.rs): the world passes of every lighting path draw it.
+//!
+//! GL state: each step sets the stencil, depth, colour-mask, culling and
+//! blend state it needs, and restores the defaults (all off, GL_LESS, masks
+//! on, GL_CCW) before returning.
+
+use crate::frame::lights::FrameLights;
+use crate::frame::plan::Pass;
+use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::views::View;
+use crate::frame::{Frame, FrameOrder, Programs, RunPasses, Stage, Technique};
+use crate::gl::program::Program;
+use crate::math::reflection;
+use crate::scene::knobs;
+use crate::scene::{MirrorOrder, Scene};
+use anyhow::Result;
+use glam::Mat4;
+use glow::HasContext;
+
+pub const MIRROR: Technique = Technique {
+    name: "mirror",
+    notes: "notes 05, Planar Reflections to Normal First Addendum",
+    file: file!(),
+    shaders: &[
+        "stencil/mirror.vert",
+        "stencil/mirror.frag",
+        "common/fullscreen.vert",
+        "stencil/mirror_clear.frag",
+    ],
+    scene: "scenes/mirror-normal-first.toml",
+    docs: "docs/stencil/mirror.md",
+    knobs: &[
+        &knobs::MIRROR_ORDER,
+        &knobs::MIRROR_DEPTH,
+        &knobs::MIRROR_CLIP,
+        &knobs::MIRROR_WINDING,
+    ],
+    // Every pass of this technique comes through `order`.
+    passes: |_, _| vec![],
+    targets,
+    create,
+    order: Some(order),
+};
+
+/// Normal first, pass 2: stencil where the mirror passes the depth test.
+const MARK: u32 = 0;
+/// Normal first, pass 3 (first half): depth = far inside the stencil only.
+const CLEAR_DEPTH: u32 = 1;
+/// Reflected first, pass 2: mark the mirror, clear the colour outside it.
+const STENCIL_AND_CLEAR: u32 = 2;
+/// Multiply the reflection by the mirror's tint (stencil region: normal first).
+const SURFACE: u32 = 3;
+/// The same, depth-tested against what is in front (reflected first).
+const SURFACE_TESTED: u32 = 4;
+/// Give a nested region back to its parent's stencil value.
+const UNMARK: u32 = 5;
+
+fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
+    vec![]
+}
+
+/// The frame's views and stages; None without a mirror (no stencil work).
+fn order(scene: &Scene, _: &FrameLights) -> Option<FrameOrder> {
+    let mirrors = scene.mirrors();
+    if mirrors.is_empty() {
+        return None;
+    }
+    let r = &scene.render;
+    if r.mirror_order == MirrorOrder::ReflectedFirst && mirrors.len() == 1 && r.mirror_depth == 1 {
+        reflected_first(scene, mirrors[0])
+    } else {
+        Some(normal_first(scene, &mirrors))
+    }
+}
+
+/// The view of the world reflected in `mirror`, seen in `parent`.
+fn reflected_view(
+    scene: &Scene,
+    parent: &View,
+    mirror: usize,
+    stencil: Option<u8>,
+) -> Option<View> {
+    let o = &scene.objects[mirror];
+    let plane = o.mirror_plane()?;
+    let n = plane.truncate();
+    let r = parent.reflection * reflection::reflection(-plane.w * n, n)?;
+    let name = match parent.stencil {
+        None => format!("in mirror '{}'", o.name),
+        Some(_) => format!("in mirror '{}', {}", o.name, parent.name),
+    };
+    let odd = glam::Mat3::from_mat4(r).determinant() < 0.0;
+    Some(View {
+        name,
+        reflection: r,
+        clip_plane: scene.render.mirror_clip.then_some(plane),
+        stencil,
+        clears: false,
+        flip_winding: odd && scene.render.mirror_winding,
+    })
+}
+
+fn reflected_first(scene: &Scene, m: usize) -> Option<FrameOrder> {
+    let camera = View {
+        clears: false,
+        ..View::camera()
+    };
+    let reflected = View {
+        clears: true,
+        ..reflected_view(scene, &camera, m, None)?
+    };
+    let o = &scene.objects[m];
+    let mirror = o.mirror.as_ref()?;
+    let mut stages = vec![Stage::World(1)];
+    // An infinite mirror, or one framed by a wall, needs no pass 2.
+    let stencil = !(mirror.infinite || mirror.covered);
+    if stencil {
+        let draws = format!("mirror '{}': stencil 1, colour cleared outside it", o.name);
+        stages.push(Stage::Own(
+            Pass::new("mirror stencil", OUTPUT, draws, file!())
+                .step(STENCIL_AND_CLEAR)
+                .about(m, 1),
+        ));
+    }
+    stages.push(Stage::World(0));
+    let draws = format!("mirror '{}': tint x reflectance, depth-tested", o.name);
+    stages.push(Stage::Own(
+        Pass::new("mirror surface", OUTPUT, draws, file!())
+            .step(SURFACE_TESTED)
+            .about(m, u32::from(stencil)),
+    ));
+    Some(FrameOrder {
+        views: vec![camera, reflected],
+        stages,
+    })
+}
+
+fn normal_first(scene: &Scene, mirrors: &[usize]) -> FrameOrder {
+    let mut order = FrameOrder {
+        views: vec![View::camera()],
+        stages: vec![Stage::World(0)],
+    };
+    let levels = scene.render.mirror_depth + 1;
+    for (i, &m) in mirrors.iter().enumerate() {
+        // Mirror i's own stencil value, and one more per level inside it.
+        visit(scene, mirrors, &mut order, m, 0, 1, 1 + i as u32 * levels);
+    }
+    order
+}
+
+/// Mirror `m` seen in view `parent`, `level` mirrors deep, marked `value`.
+fn visit(
+    scene: &Scene,
+    mirrors: &[usize],
+    order: &mut FrameOrder,
+    m: usize,
+    parent: usize,
+    level: u32,
+    value: u32,
+) {
+    let name = &scene.objects[m].name;
+    let own = |pass: &'static str, step: u32, draws: String| {
+        Stage::Own(
+            Pass::new(pass, OUTPUT, draws, file!())
+                .step(step)
+                .about(m, value)
+                .for_view(parent),
+        )
+    };
+    let Some(view) = reflected_view(scene, &order.views[parent], m, Some(value as u8)) else {
+        return;
+    };
+    let how = if level == 1 { "" } else { " (increment)" };
+    order.stages.push(own(
+        "mirror mark",
+        MARK,
+        format!("mirror '{name}': stencil {value}{how} where it passes the depth test"),
+    ));
+    if level <= scene.render.mirror_depth {
+        order.stages.push(own(
+            "mirror depth clear",
+            CLEAR_DEPTH,
+            format!("depth = far where stencil = {value}"),
+        ));
+        order.views.push(view);
+        let k = order.views.len() - 1;
+        order.stages.push(Stage::World(k));
+        for &c in mirrors.iter().filter(|&&c| c != m) {
+            visit(scene, mirrors, order, c, k, level + 1, value + 1);
+        }
+    }
+    order.stages.push(own(
+        "mirror surface",
+        SURFACE,
+        format!("mirror '{name}': tint x reflectance where stencil = {value}"),
+    ));
+    if level > 1 {
+        order.stages.push(own(
+            "mirror unmark",
+            UNMARK,
+            format!("stencil {value} -> {} (decrement)", value - 1),
+        ));
+    }
+}
+
+struct Mirror {
+    polygon: Program,
+    clear: Program,
+}
+
+fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    Ok(Box::new(Mirror {
+        polygon: p.build(&[
+            (glow::VERTEX_SHADER, "stencil/mirror.vert"),
+            (glow::FRAGMENT_SHADER, "stencil/mirror.frag"),
+        ])?,
+        clear: p.build(&[
+            (glow::VERTEX_SHADER, "common/fullscreen.vert"),
+            (glow::FRAGMENT_SHADER, "stencil/mirror_clear.frag"),
+        ])?,
+    }))
+}
+
+impl RunPasses for Mirror {
+    fn run(&self, pass: &Pass, f: &Frame) {
+        let gl = f.gl;
+        let target = f.targets.get(OUTPUT);
+        let value = pass.value as i32;
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
+            gl.viewport(0, 0, target.width, target.height);
+            gl.enable(glow::STENCIL_TEST);
+            gl.enable(glow::DEPTH_TEST);
+            match pass.step {
+                MARK => {
+                    // Normal first, pass 2: "clear the stencil, render the
+                    // mirror, setting the stencil if the depth test passes".
+                    if f.view.stencil.is_none() {
+                        if f.scene.mirrors().first() == Some(&pass.item) {
+                            gl.clear_stencil(0);
+                            gl.clear(glow::STENCIL_BUFFER_BIT);
+                        }
+                        gl.stencil_func(glow::ALWAYS, value, 0xff);
+                        gl.stencil_op(glow::KEEP, glow::KEEP, glow::REPLACE);
+                    } else {
+                        // Inside its parent's region only, one level deeper.
+                        gl.stencil_func(glow::EQUAL, value - 1, 0xff);
+                        gl.stencil_op(glow::KEEP, glow::KEEP, glow::INCR);
+                    }
+                    gl.depth_func(glow::LEQUAL);
+                    gl.depth_mask(false);
+                    // Painted in the clear colour: where the reflection shows
+                    // nothing, the mirror shows what reflected first shows.
+                    self.draw_polygon(f, pass.item, f.scene.render.background, false);
+                }
+                CLEAR_DEPTH => {
+                    // Pass 3: "clear the depth buffer with the stencil active,
+                    // passing things inside the mirror only".
+                    gl.stencil_func(glow::EQUAL, value, 0xff);
+                    gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
+                    gl.color_mask(false, false, false, false);
+                    gl.depth_func(glow::ALWAYS);
+                    self.draw_clear(f);
+                }
+                STENCIL_AND_CLEAR => {
+                    // Reflected first, pass 2: "disable the colour buffer,
+                    // enable the stencil buffer to always pass but set the
+                    // buffer, render the mirror polygon".
+                    gl.clear_stencil(0);
+                    gl.clear(glow::STENCIL_BUFFER_BIT);
+                    gl.color_mask(false, false, false, false);
+                    gl.stencil_func(glow::ALWAYS, value, 0xff);
+                    gl.stencil_op(glow::KEEP, glow::KEEP, glow::REPLACE);
+                    // The mirror's own depth: what lies behind it must not
+                    // show through it in pass 3.
+                    gl.depth_func(glow::ALWAYS);
+                    self.draw_polygon(f, pass.item, glam::Vec3::ZERO, false);
+                    // "Now set the stencil test to only pass points outside
+                    // the mirror; clear the colour buffer."
+                    gl.color_mask(true, true, true, true);
+                    gl.stencil_func(glow::NOTEQUAL, value, 0xff);
+                    gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
+                    self.draw_clear(f);
+                }
+                SURFACE | SURFACE_TESTED => {
+                    if value == 0 {
+                        gl.disable(glow::STENCIL_TEST);
+                    }
+                    gl.stencil_func(glow::EQUAL, value, 0xff);
+                    gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
+                    // Reflected first marked the whole polygon: what stands
+                    // in front of it must fail the depth test.
+                    let test = if pass.step == SURFACE {
+                        glow::ALWAYS
+                    } else {
+                        glow::LEQUAL
+                    };
+                    gl.depth_func(test);
+                    gl.enable(glow::BLEND);
+                    gl.blend_func(glow::ZERO, glow::SRC_COLOR);
+                    let m = f.scene.objects[pass.item].mirror.as_ref();
+                    let tint = m.map_or(glam::Vec3::ONE, |m| m.tint * m.reflectance);
+                    self.draw_polygon(f, pass.item, tint, true);
+                    gl.disable(glow::BLEND);
+                    gl.blend_func(glow::ONE, glow::ZERO);
+                }
+                UNMARK => {
+                    gl.stencil_func(glow::EQUAL, value, 0xff);
+                    gl.stencil_op(glow::KEEP, glow::KEEP, glow::DECR);
+                    gl.color_mask(false, false, false, false);
+                    gl.depth_func(glow::ALWAYS);
+                    gl.depth_mask(false);
+                    self.draw_polygon(f, pass.item, glam::Vec3::ZERO, false);
+                }
+                other => unreachable!("mirror has no step {other}"),
+            }
+            // Restore the state this pass changed.
+            gl.color_mask(true, true, true, true);
+            gl.depth_mask(true);
+            gl.depth_func(glow::LESS);
+            gl.disable(glow::DEPTH_TEST);
+            gl.stencil_func(glow::ALWAYS, 0, 0xff);
+            gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
+            gl.disable(glow::STENCIL_TEST);
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        }
+    }
+}
+
+impl Mirror {
+    /// Draw mirror `item`'s polygon in this pass's view in linear `color`
+    /// (times its roughening texture when `roughen`), back faces culled: a
+    /// mirror seen from behind is no mirror.
+    fn draw_polygon(&self, f: &Frame, item: usize, color: glam::Vec3, roughen: bool) {
+        let (gl, p, u) = (f.gl, &self.polygon, f.uniforms);
+        let d = &f.draws.items[item];
+        let texture = d.roughness.filter(|_| roughen);
+        unsafe {
+            gl.enable(glow::CULL_FACE);
+            gl.cull_face(glow::BACK);
+            gl.front_face(f.view.front_face(d.mirrored));
+            if f.view.clip_plane.is_some() {
+                gl.enable(glow::CLIP_DISTANCE0);
+            }
+            p.use_program();
+            p.set_mat4("u_model", &d.model);
+            p.set_mat4("u_view_projection", &u.view_projection);
+            p.set_vec4("u_clip_plane", f.view.clip_uniform());
+            p.set_vec3("u_color", color);
+            p.set_bool("u_output_srgb", u.output_srgb);
+            p.set_bool("u_has_roughness", texture.is_some());
+            p.set_i32("u_roughness", 0);
+            gl.active_texture(glow::TEXTURE0);
+            gl.bind_texture(glow::TEXTURE_2D, texture.map(|t| f.draws.textures[t].id));
+            f.draws.mesh(d).draw();
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            gl.use_program(None);
+            gl.disable(glow::CLIP_DISTANCE0);
+            gl.front_face(glow::CCW);
+            gl.disable(glow::CULL_FACE);
+        }
+    }
+
+    /// A full-screen triangle in the clear colour at the far depth.
+    fn draw_clear(&self, f: &Frame) {
+        let p = &self.clear;
+        p.use_program();
+        p.set_mat4("u_mvp", &Mat4::IDENTITY);
+        p.set_vec3("u_clear_color", f.uniforms.clear_color);
+        f.meshes.fullscreen.draw();
+        unsafe { f.gl.use_program(None) };
+    }
+}

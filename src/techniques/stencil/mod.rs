@@ -1,0 +1,3 @@
+//! Notes 05: multi-pass techniques with the stencil buffer.
+
+pub mod mirror;

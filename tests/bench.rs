@@ -80,3 +80,53 @@ fn bench_rejects_bad_arguments() {
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("expected a fraction in (0, 1)"));
 }
+
+#[test]
+fn bench_varies_any_scene_key_against_a_reference() {
+    // The mirror's recursion depths against the deepest reflection: the
+    // error falls as the depth grows, and the reference's own setting is exact.
+    let out = std::env::temp_dir().join("gloss-bench-vary");
+    let _ = std::fs::remove_dir_all(&out);
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "scenes/mirrors-recursive.toml"])
+        .args(["--vary", "render.mirror_depth=1,3,8"])
+        .args(["--reference", "render.mirror_depth=8"])
+        .args([
+            "--frames", "1", "--warmup", "0", "--size", "160x90", "--out",
+        ])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rmse: Vec<f64> = stdout
+        .lines()
+        .filter(|l| l.starts_with("render.mirror_depth="))
+        .map(|l| {
+            // RMSE is the fourth column from the end (RMSE, max, %, clock).
+            let cols: Vec<&str> = l.split_whitespace().collect();
+            cols[cols.len() - 4].parse().unwrap()
+        })
+        .collect();
+    assert_eq!(rmse.len(), 3, "{stdout}");
+    assert!(rmse[0] > rmse[1] && rmse[1] > rmse[2], "{rmse:?}\n{stdout}");
+    assert_eq!(rmse[2], 0.0, "{stdout}");
+    assert!(
+        stdout.contains("mirror mark"),
+        "mirror passes are timed: {stdout}"
+    );
+    // A bad key is refused before anything is measured.
+    let bad = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([
+            "bench",
+            "scenes/mirrors-recursive.toml",
+            "--vary",
+            "render.no_such=1",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("no_such"));
+}

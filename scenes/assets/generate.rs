@@ -2,6 +2,8 @@
 //!
 //! * `checker.png`: 256x256 sRGB albedo checkerboard (8x8 squares);
 //! * `bricks.png`: 256x256 procedural brick albedo (running bond, mortar);
+//! * `ripples.png`: 256x256 linear greyscale ripples, 0.55 to 1, that roughen
+//!   a mirror's reflection (a lake's surface);
 //! * `knot.obj`: a (2, 3) torus knot tube, 3072 triangles, with normals and uvs;
 //! * `rock.obj`: a low-poly displaced icosphere, uvs but NO normals, so that
 //!   loading it exercises `geometry::compute_normals`.
@@ -18,6 +20,7 @@ fn main() -> Result<()> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/assets");
     write_png(&dir.join("checker.png"), checker())?;
     write_png(&dir.join("bricks.png"), bricks())?;
+    write_png(&dir.join("ripples.png"), ripples())?;
     write_obj(
         &dir.join("knot.obj"),
         &torus_knot(2, 3, 128, 12),
@@ -63,6 +66,19 @@ fn checker() -> image::RgbImage {
         } else {
             teal
         })
+    })
+}
+
+fn ripples() -> image::RgbImage {
+    image::RgbImage::from_fn(256, 256, |x, y| {
+        // Two families of waves that tile (whole periods across the
+        // texture), plus a little grain.
+        let (u, v) = (x as f32 / 256.0, y as f32 / 256.0);
+        let tau = std::f32::consts::TAU;
+        let w = 0.5 * (tau * (6.0 * u + 2.0 * v)).sin() + 0.5 * (tau * (3.0 * v - 4.0 * u)).sin();
+        let t = 0.775 + 0.2 * w * 0.5 + 0.025 * (hash2(x, y) - 0.5);
+        let g = (t.clamp(0.55, 1.0) * 255.0).round() as u8;
+        image::Rgb([g, g, g])
     })
 }
 

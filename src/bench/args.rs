@@ -35,6 +35,14 @@ pub struct BenchArgs {
     /// Unmeasured frames first.
     #[arg(long, default_value_t = 3)]
     pub warmup: usize,
+    /// Vary any scene key instead of the render path: KEY=V1,V2,...
+    /// (repeatable; every combination is measured). See src/bench/variants.rs.
+    #[arg(long, value_name = "KEY=V1,V2")]
+    pub vary: Vec<String>,
+    /// With --vary: the reference image's settings, KEY=VALUE (repeatable;
+    /// default: the scene as written).
+    #[arg(long = "reference", value_name = "KEY=VALUE", requires = "vary")]
+    pub reference: Vec<String>,
     /// Where the CSV and the plot go.
     #[arg(long, default_value = "target/bench")]
     pub out: PathBuf,

@@ -19,6 +19,7 @@ mod csv;
 mod plot;
 mod stats;
 mod table;
+mod variants;
 
 pub use args::{BenchArgs, parse_size};
 pub use csv::{csv, write_csv};
@@ -71,6 +72,9 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     let base = Scene::load(&scene_path)?;
     let ctx = Headless::new(backend, false)?;
     let software = ctx.info.renderer.contains("llvmpipe") || ctx.info.renderer.contains("softpipe");
+    if !args.vary.is_empty() {
+        return variants::run(args, &scene_path, &ctx, software);
+    }
     let (w, h) = args.size.unwrap_or(base.render.size);
     let light_counts = if args.lights.is_empty() {
         vec![base.lights.len()]
@@ -167,60 +171,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
             .expect("made above")
             .1;
 
-        let mut r = Renderer::new(
-            &ctx.gl,
-            &ctx.debug,
-            &scene,
-            &Sources::Embedded,
-            w as i32,
-            h as i32,
-        )
-        .with_context(|| format!("setting {}", s.label()))?;
-        r.timing = true;
-        let query = if software {
-            None
-        } else {
-            Some(TimerQuery::new(&ctx.gl)?)
-        };
-        let camera = scene.camera.clone();
-        let mut frame = Vec::new();
-        let mut gpu = Vec::new();
-        let mut passes: Vec<(String, Vec<f64>)> = Vec::new();
-        for f in 0..args.warmup + args.frames {
-            eprint!(
-                "\r[{}/{}] {:<32} {} lights: frame {}/{}   ",
-                i + 1,
-                settings.len(),
-                s.label(),
-                s.lights,
-                f + 1,
-                args.warmup + args.frames
-            );
-            let _ = std::io::stderr().flush();
-            if let Some(q) = &query {
-                q.begin();
-            }
-            r.render(&camera)?;
-            if let Some(q) = &query {
-                q.end();
-            }
-            if f < args.warmup {
-                continue;
-            }
-            if let Some(q) = &query {
-                gpu.push(q.result_ns() as f64 / 1e6);
-            }
-            frame.push(r.last_times.frame_ms);
-            for (name, ms) in &r.last_times.passes {
-                match passes.iter_mut().find(|(n, _)| n == name) {
-                    Some((_, v)) => v.push(*ms),
-                    None => passes.push((name.to_string(), vec![*ms])),
-                }
-            }
-        }
-        let img = r.read_image();
-        let m = compare_rgba8(&img, reference, 1.0 / 255.0)?;
-        rows.push(BenchRow {
+        let row = BenchRow {
             setting: s.label(),
             // The plot draws one series per path; the stencil variant is its own.
             path: if s.stencil {
@@ -230,32 +181,127 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
             },
             lights: s.lights,
             cutoff: s.cutoff,
-            passes: passes
-                .into_iter()
-                .map(|(n, mut v)| (n, Stats::from_samples(&mut v)))
-                .collect(),
-            frame: Stats::from_samples(&mut frame),
-            gpu_frame_ms: if gpu.is_empty() {
-                None
-            } else {
-                Some(Stats::from_samples(&mut gpu))
-            },
-            clock: "cpu+glFinish".into(),
-            rmse: m.rmse,
-            max_abs: m.max_abs,
-            pct_over_1: m.frac_over * 100.0,
-        });
+            ..BenchRow::default()
+        };
+        let progress = format!(
+            "[{}/{}] {:<32} {} lights",
+            i + 1,
+            settings.len(),
+            s.label(),
+            s.lights
+        );
+        rows.push(measure(
+            &ctx, software, args, &scene, reference, row, &progress,
+        )?);
     }
     eprintln!();
-    println!("{}", table(&rows));
+    finish(&rows, args)
+}
+
+/// Print the table, write the CSV and the plot.
+fn finish(rows: &[BenchRow], args: &BenchArgs) -> Result<()> {
+    println!("{}", table(rows));
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create {}", args.out.display()))?;
     let csv = args.out.join("bench.csv");
     let png = args.out.join("bench.png");
-    write_csv(&rows, &csv)?;
-    plot(&rows, &png)?;
+    write_csv(rows, &csv)?;
+    plot(rows, &png)?;
     println!("wrote {} and {}", csv.display(), png.display());
     Ok(())
+}
+
+/// Render `scene` `args.warmup + args.frames` times, timing each pass, and
+/// fill `row`'s times and its error against `reference`.
+fn measure(
+    ctx: &Headless,
+    software: bool,
+    args: &BenchArgs,
+    scene: &Scene,
+    reference: &image::RgbaImage,
+    row: BenchRow,
+    progress: &str,
+) -> Result<BenchRow> {
+    let (w, h) = scene.render.size;
+    let mut r = Renderer::new(
+        &ctx.gl,
+        &ctx.debug,
+        scene,
+        &Sources::Embedded,
+        w as i32,
+        h as i32,
+    )
+    .with_context(|| format!("setting {}", row.setting))?;
+    r.timing = true;
+    let query = if software {
+        None
+    } else {
+        Some(TimerQuery::new(&ctx.gl)?)
+    };
+    let camera = scene.camera.clone();
+    let mut frame = Vec::new();
+    let mut gpu = Vec::new();
+    let mut passes: Vec<(String, Vec<f64>)> = Vec::new();
+    for f in 0..args.warmup + args.frames {
+        eprint!(
+            "\r{progress}: frame {}/{}   ",
+            f + 1,
+            args.warmup + args.frames
+        );
+        let _ = std::io::stderr().flush();
+        if let Some(q) = &query {
+            q.begin();
+        }
+        r.render(&camera)?;
+        if let Some(q) = &query {
+            q.end();
+        }
+        if f < args.warmup {
+            continue;
+        }
+        if let Some(q) = &query {
+            gpu.push(q.result_ns() as f64 / 1e6);
+        }
+        frame.push(r.last_times.frame_ms);
+        add_pass_times(&mut passes, &r.last_times.passes);
+    }
+    let img = r.read_image();
+    let m = compare_rgba8(&img, reference, 1.0 / 255.0)?;
+    Ok(BenchRow {
+        passes: passes
+            .into_iter()
+            .map(|(n, mut v)| (n, Stats::from_samples(&mut v)))
+            .collect(),
+        frame: Stats::from_samples(&mut frame),
+        gpu_frame_ms: if gpu.is_empty() {
+            None
+        } else {
+            Some(Stats::from_samples(&mut gpu))
+        },
+        clock: "cpu+glFinish".into(),
+        rmse: m.rmse,
+        max_abs: m.max_abs,
+        pct_over_1: m.frac_over * 100.0,
+        ..row
+    })
+}
+
+/// Add one frame's pass times to `passes`: a pass that runs several times
+/// in a frame (the world drawn once per mirror view) counts once, summed.
+fn add_pass_times(passes: &mut Vec<(String, Vec<f64>)>, frame: &[(&'static str, f64)]) {
+    let mut sums: Vec<(&str, f64)> = Vec::new();
+    for &(name, ms) in frame {
+        match sums.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, t)) => *t += ms,
+            None => sums.push((name, ms)),
+        }
+    }
+    for (name, ms) in sums {
+        match passes.iter_mut().find(|(n, _)| n == name) {
+            Some((_, v)) => v.push(ms),
+            None => passes.push((name.to_string(), vec![ms])),
+        }
+    }
 }
 
 /// Creates `path`'s parent directory (for the CSV file and the plot).

@@ -1,7 +1,7 @@
 //! Median and spread of `gloss bench`'s timing samples.
 
 /// Summary of timing samples, in milliseconds.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Stats {
     pub median: f64,
     /// 10th percentile.

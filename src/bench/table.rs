@@ -8,7 +8,7 @@
 use super::stats::Stats;
 
 /// One measured configuration of `gloss bench`.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct BenchRow {
     /// Human-readable name of the configuration.
     pub setting: String,

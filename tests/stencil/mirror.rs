@@ -453,3 +453,101 @@ fn the_stencil_inspector_shows_each_level_after_any_pass() {
         "{err}"
     );
 }
+
+/// `scene` rendered as it is and with `change` applied must give the same
+/// image (the bound of the two orders).
+fn same_image(name: &str, scene: &Scene, change: impl Fn(&mut Scene)) {
+    let ctx = common::context(common::backend());
+    let a = common::render_with(&ctx, scene, gloss::renderer::Output::Srgb8);
+    let mut other = scene.clone();
+    change(&mut other);
+    let b = common::render_with(&ctx, &other, gloss::renderer::Output::Srgb8);
+    common::assert_close(
+        name,
+        &a.image,
+        &b.image,
+        &gloss::image_compare::Tolerance {
+            threshold: 1.0 / 255.0,
+            max_frac_over: 0.001,
+            max_abs: Some(3.0 / 255.0),
+        },
+    );
+}
+
+fn has_stencil_pass(scene: &Scene) -> bool {
+    gloss::techniques::plan(scene)
+        .passes
+        .iter()
+        .any(|p| p.name == "mirror stencil")
+}
+
+#[test]
+fn an_infinite_mirror_needs_no_stencil_pass() {
+    let lake = common::scene("mirror-infinite.toml");
+    assert!(!has_stencil_pass(&lake));
+    let bounded = |s: &mut Scene| s.objects[0].mirror.as_mut().unwrap().infinite = false;
+    let mut check = lake.clone();
+    bounded(&mut check);
+    assert!(has_stencil_pass(&check));
+    // The lake reaches past the far plane: the stencil would mark every
+    // pixel below the horizon, so it changes nothing.
+    same_image("mirror-infinite-vs-bounded", &lake, bounded);
+    same_image("mirror-infinite-vs-normal-first", &lake, |s| {
+        s.render.mirror_order = MirrorOrder::NormalFirst
+    });
+}
+
+#[test]
+fn a_mirror_covered_by_a_wall_needs_no_stencil_pass() {
+    let wall = common::scene("mirror-covered.toml");
+    assert!(!has_stencil_pass(&wall));
+    let mirror = wall
+        .objects
+        .iter()
+        .position(|o| o.mirror.is_some())
+        .unwrap();
+    same_image("mirror-covered-vs-stencil", &wall, |s| {
+        s.objects[mirror].mirror.as_mut().unwrap().covered = false
+    });
+}
+
+#[test]
+fn the_roughening_texture_multiplies_the_reflection() {
+    // A uniform grey roughening texture of linear value 0.5: every pixel of
+    // the mirror is the bare reflection times 0.5, encoded (the blend
+    // multiplies encoded values: see docs/stencil/mirror.md), within 2/255.
+    let dir = common::out_dir().join("roughness");
+    std::fs::create_dir_all(&dir).unwrap();
+    let grey = dir.join("grey.png");
+    image::RgbImage::from_pixel(8, 8, image::Rgb([128, 128, 128]))
+        .save(&grey)
+        .unwrap();
+    let plain = plain_mirrors(common::scene("mirror-normal-first.toml"));
+    let mut rough = plain.clone();
+    let m = rough
+        .objects
+        .iter()
+        .position(|o| o.mirror.is_some())
+        .unwrap();
+    rough.objects[m].mirror.as_mut().unwrap().roughness = Some(grey);
+    let ctx = common::context(common::backend());
+    let a = capture(&ctx, &plain);
+    let b = capture(&ctx, &rough);
+    let mask = region(&a, 1);
+    let factor = gloss::lighting::srgb_encode(128.0 / 255.0);
+    let (mut n, mut worst) = (0, 0.0f32);
+    for (i, inside) in mask.iter().enumerate() {
+        if !inside {
+            continue;
+        }
+        let (x, y) = ((i % a.width) as u32, (i / a.width) as u32);
+        for c in 0..3 {
+            let bare = f32::from(a.image.get_pixel(x, y)[c]);
+            let got = f32::from(b.image.get_pixel(x, y)[c]);
+            worst = worst.max((got - bare * factor).abs());
+        }
+        n += 1;
+    }
+    assert!(n > 10_000, "{n} pixels in the mirror");
+    assert!(worst <= 2.0, "a pixel is {worst}/255 from bare x {factor}");
+}

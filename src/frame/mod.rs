@@ -12,6 +12,7 @@
 //! - `meshes`: the meshes every screen or volume pass draws.
 //! - `timing`: pass times around glFinish.
 
+pub mod billboards;
 pub mod draw_list;
 pub mod gbuffer;
 pub mod lights;

@@ -2,7 +2,8 @@
 //! serde's defaults for every key that may be left out. `resolve` checks these
 //! values and turns them into a `Scene`.
 
-use super::settings::{Accumulation, DepthFunc, RenderPath, Shading};
+use super::billboards::{BillboardFieldFile, BillboardFile};
+use super::settings::{Accumulation, AlphaTest, BillboardMode, DepthFunc, RenderPath, Shading};
 use serde::Deserialize;
 use std::collections::HashMap;
 
@@ -20,6 +21,10 @@ pub(super) struct SceneFile {
     pub(super) materials: HashMap<String, MaterialFile>,
     #[serde(default)]
     pub(super) objects: Vec<ObjectFile>,
+    #[serde(default)]
+    pub(super) billboards: Vec<BillboardFile>,
+    #[serde(default)]
+    pub(super) billboard_fields: Vec<BillboardFieldFile>,
 }
 
 #[derive(Deserialize, Debug)]
@@ -69,6 +74,8 @@ pub(super) struct RenderFile {
     pub(super) cutoff: f32,
     pub(super) stencil_volumes: bool,
     pub(super) accumulation: Accumulation,
+    pub(super) billboards: BillboardMode,
+    pub(super) billboard_alpha_ref: f32,
 }
 
 impl Default for RenderFile {
@@ -83,6 +90,8 @@ impl Default for RenderFile {
             cutoff: 5.0 / 256.0,
             stencil_volumes: false,
             accumulation: Accumulation::Rgba16f,
+            billboards: BillboardMode::AlphaTest,
+            billboard_alpha_ref: 0.5,
         }
     }
 }
@@ -156,6 +165,18 @@ pub(super) struct MaterialFile {
     pub(super) specular: [f32; 3],
     #[serde(default = "shininess_default")]
     pub(super) shininess: f32,
+    /// The alpha test on the diffuse texture's alpha (notes 05, "Alpha Test").
+    #[serde(default = "always")]
+    pub(super) alpha_test: AlphaTest,
+    #[serde(default = "half")]
+    pub(super) alpha_ref: f32,
+}
+
+fn always() -> AlphaTest {
+    AlphaTest::Always
+}
+fn half() -> f32 {
+    0.5
 }
 
 fn grey() -> [f32; 3] {

@@ -9,6 +9,8 @@
 //! written in TOML (`file`), checking it and turning it into a [`Scene`]
 //! (`resolve`), and the seeded many-lights generator (`light_grid`).
 
+mod alpha_test;
+mod billboards;
 mod file;
 pub mod knobs;
 mod light_grid;
@@ -17,8 +19,12 @@ mod resolve;
 mod save;
 mod settings;
 
+pub use alpha_test::BILLBOARD_ALPHA_TEST;
+pub use billboards::{Billboard, MAX_BILLBOARDS};
 pub use lights::validate_attenuation;
-pub use settings::{Accumulation, DepthFunc, RenderPath, Shading};
+pub use settings::{
+    Accumulation, AlphaTest, BillboardKind, BillboardMode, DepthFunc, RenderPath, Shading,
+};
 
 use crate::assets;
 use crate::math;
@@ -78,6 +84,10 @@ pub struct RenderSettings {
     pub stencil_volumes: bool,
     /// Internal format of the light accumulation target (RGBA16F or RGBA32F).
     pub accumulation: Accumulation,
+    /// How billboards are drawn: alpha test, blending, or sorted blending (notes 05).
+    pub billboards: BillboardMode,
+    /// The billboards' alpha test passes alpha >= this (notes 05: 0.5).
+    pub billboard_alpha_ref: f32,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -121,6 +131,9 @@ pub struct Material {
     pub diffuse_texture: Option<PathBuf>,
     pub specular: Vec3,
     pub shininess: f32,
+    /// Alpha test on the diffuse texture's alpha: op and reference (notes 05).
+    pub alpha_test: AlphaTest,
+    pub alpha_ref: f32,
 }
 
 /// Where a mesh comes from.
@@ -199,6 +212,9 @@ pub struct Scene {
     pub grid_lights: Option<usize>,
     pub materials: Vec<Material>,
     pub objects: Vec<Object>,
+    /// Billboard sprites (RGBA PNGs), each once, and the billboards (notes 05).
+    pub sprites: Vec<PathBuf>,
+    pub billboards: Vec<Billboard>,
 }
 
 /// Set `table.key = value` in a parsed scene file, making tables as needed.

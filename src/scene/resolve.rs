@@ -4,7 +4,7 @@
 //! One function per section of the file, in the order they are checked.
 
 use super::file::SceneFile;
-use super::{Camera, Material, MeshSource, Object, Projection, RenderSettings, Scene};
+use super::{AlphaTest, Camera, Material, MeshSource, Object, Projection, RenderSettings, Scene};
 use crate::assets;
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
@@ -40,6 +40,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
     let lights = super::lights::lights(&f)?;
     let (materials, material_index) = materials(&f, base)?;
     let objects = objects(&f, &material_index, base)?;
+    let (sprites, billboards) = super::billboards::billboards(&f, base)?;
 
     Ok(Scene {
         name,
@@ -50,6 +51,8 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         lights,
         materials,
         objects,
+        sprites,
+        billboards,
     })
 }
 
@@ -149,6 +152,14 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         stencil_volumes: r.stencil_volumes,
         accumulation: r.accumulation,
+        billboards: r.billboards,
+        billboard_alpha_ref: {
+            let a = r.billboard_alpha_ref;
+            if !(a.is_finite() && (0.0..=1.0).contains(&a)) {
+                bail!("render.billboard_alpha_ref: expected a number in 0..=1, found {a}");
+            }
+            a
+        },
     })
 }
 
@@ -163,6 +174,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         diffuse_texture: None,
         specular: Vec3::splat(0.3),
         shininess: 32.0,
+        alpha_test: AlphaTest::Always,
+        alpha_ref: 0.5,
     }];
     let mut material_index = HashMap::new();
     for n in names {
@@ -175,6 +188,13 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
                 "{}: expected a number in 1..=4096, found {}",
                 key("shininess"),
                 m.shininess
+            );
+        }
+        if !(m.alpha_ref.is_finite() && (0.0..=1.0).contains(&m.alpha_ref)) {
+            bail!(
+                "{}: expected a number in 0..=1, found {}",
+                key("alpha_ref"),
+                m.alpha_ref
             );
         }
         let diffuse_texture = match &m.diffuse_texture {
@@ -198,6 +218,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             diffuse_texture,
             specular: Vec3::from(m.specular),
             shininess: m.shininess,
+            alpha_test: m.alpha_test,
+            alpha_ref: m.alpha_ref,
         });
     }
     Ok((materials, material_index))
@@ -289,7 +311,7 @@ fn objects(
 /// A path written in a scene file: relative to the file, unless it names a
 /// shipped file (`embedded:scenes/...`, as "save as" writes for a shipped
 /// scene's assets).
-fn relative_to(base: &Path, written: &str) -> std::path::PathBuf {
+pub(super) fn relative_to(base: &Path, written: &str) -> std::path::PathBuf {
     if written.starts_with(assets::EMBEDDED) {
         std::path::PathBuf::from(written)
     } else {

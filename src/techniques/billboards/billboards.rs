@@ -1,0 +1,235 @@
+//! Billboards (notes 05, "Billboards"; "Alpha Test"; "Alpha Test and
+//! Billboards").
+//!
+//! A billboard replaces complex geometry (a tree) with an image on a quad
+//! that turns to the camera; the image's alpha is 1 where the tree is and 0
+//! where it is not. The quad is built in glsl/billboards/billboards.vert
+//! from its centre and size (one instanced quad, corners from gl_VertexID):
+//! spherical billboards lie in the camera's image plane, cylindrical ones
+//! turn only about the world's up axis and stay upright.
+//!
+//! Three ways to draw them (`render.billboards`):
+//!
+//! - `blend`: glEnable(GL_BLEND), glBlendFunc(GL_SRC_ALPHA,
+//!   GL_ONE_MINUS_SRC_ALPHA), in scene order with depth writes on: the
+//!   notes' "big problem". A near billboard drawn first writes depth over
+//!   its transparent texels too, and a billboard behind it drawn later is
+//!   depth-rejected there: a hole.
+//! - `blend_sorted`: the same blending, the billboards sorted back to front
+//!   by view depth on the CPU every frame (`back_to_front`).
+//! - `alpha_test` (the default): "Do not let alpha < 0.5 pass through",
+//!   `discard` in glsl/common/alpha_test.glsl (the reference is
+//!   `render.billboard_alpha_ref`, 0.5 by default); no blending, no sorting.
+//!   "Depth buffer is never set for fragments that are see through."
+//!
+//! Lighting is simple: sprite colour x (ambient + each directional light on
+//! an up-facing normal), `billboard_light`; point and spot lights do not
+//! light billboards.
+//!
+//! In the deferred paths the composite writes the output's colour only, so
+//! this pass first copies the G-buffer's depth into the output
+//! (glBlitFramebuffer) and then draws forward against it.
+//!
+//! GL state: depth test with render.depth_func, glColorMask with alpha off
+//! (the output stays opaque), blending in the blend modes; restores no
+//! depth test, GL_LESS, all colour channels, no blending, GL_ONE/GL_ZERO.
+
+use crate::frame::billboards::instance_data;
+use crate::frame::gbuffer;
+use crate::frame::lights::FrameLights;
+use crate::frame::plan::Pass;
+use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::uniforms::unit;
+use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::gl::debug::check_feedback_before_draw;
+use crate::gl::framebuffer::Framebuffer;
+use crate::gl::program::Program;
+use crate::scene::knobs;
+use crate::scene::{
+    AlphaTest, BILLBOARD_ALPHA_TEST, Billboard, BillboardMode, LightKind, RenderPath, Scene,
+};
+use anyhow::Result;
+use glam::{Mat4, Vec3};
+use glow::HasContext;
+
+pub const BILLBOARDS: Technique = Technique {
+    name: "billboards",
+    notes: "notes 05, Billboards; Alpha Test; Alpha Test and Billboards",
+    file: file!(),
+    shaders: &["billboards/billboards.vert", "billboards/billboards.frag"],
+    scene: "scenes/billboards-forest.toml",
+    docs: "docs/billboards/billboards.md",
+    knobs: &[
+        &knobs::BILLBOARDS,
+        &knobs::BILLBOARD_ALPHA_REF,
+        &knobs::DEPTH_FUNC,
+        &knobs::AMBIENT,
+    ],
+    passes,
+    targets,
+    create,
+};
+
+fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
+    if scene.billboards.is_empty() {
+        return vec![];
+    }
+    let mode = match scene.render.billboards {
+        BillboardMode::AlphaTest => format!(
+            "alpha test: discard alpha < {}, no blending",
+            scene.render.billboard_alpha_ref
+        ),
+        BillboardMode::Blend => "alpha blending in scene order, depth writes on".into(),
+        BillboardMode::BlendSorted => "alpha blending, sorted back to front".into(),
+    };
+    let depth = match scene.render.path {
+        RenderPath::Forward => "",
+        _ => "G-buffer depth copied in; ",
+    };
+    let draws = format!(
+        "{} billboards, 1 instanced quad ({depth}{mode})",
+        scene.billboards.len()
+    );
+    vec![Pass::new("billboards", OUTPUT, draws, file!())]
+}
+
+fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
+    vec![]
+}
+
+struct Billboards {
+    program: Program,
+}
+
+fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    Ok(Box::new(Billboards {
+        program: p.build(&[
+            (glow::VERTEX_SHADER, "billboards/billboards.vert"),
+            (glow::FRAGMENT_SHADER, "billboards/billboards.frag"),
+        ])?,
+    }))
+}
+
+/// The order to draw `billboards` in, back to front: view space looks down
+/// -z, so the most negative view-space z (the farthest centre) comes first.
+/// Ties keep the scene's order.
+pub fn back_to_front(billboards: &[Billboard], view: &Mat4) -> Vec<usize> {
+    let z: Vec<f32> = billboards
+        .iter()
+        .map(|b| view.transform_point3(b.center).z)
+        .collect();
+    let mut order: Vec<usize> = (0..billboards.len()).collect();
+    order.sort_by(|&a, &b| z[a].total_cmp(&z[b]));
+    order
+}
+
+/// The light a billboard gets: ambient plus each directional light as if
+/// the billboard's normal pointed up (world +y).
+pub fn billboard_light(scene: &Scene) -> Vec3 {
+    let mut c = scene.render.ambient;
+    for l in &scene.lights {
+        if l.kind == LightKind::Directional {
+            c += l.radiance() * (-l.direction).dot(Vec3::Y).max(0.0);
+        }
+    }
+    c
+}
+
+impl RunPasses for Billboards {
+    fn run(&self, _: &Pass, f: &Frame) {
+        let Some(b) = &f.draws.billboards.gpu else {
+            return;
+        };
+        let (gl, scene, u, p) = (f.gl, f.scene, f.uniforms, &self.program);
+        let output = f.targets.get(OUTPUT);
+        // 1. The deferred paths: the opaque image's depth is the G-buffer's.
+        if let Some(gbuf) = f.targets.find(gbuffer::NAME) {
+            copy_depth(gl, gbuf, output);
+        }
+        // 2. The draw order: sorted back to front, or as the scene lists them.
+        let mode = scene.render.billboards;
+        let order = match mode {
+            BillboardMode::BlendSorted => back_to_front(&scene.billboards, &u.view),
+            BillboardMode::Blend | BillboardMode::AlphaTest => (0..b.count).collect(),
+        };
+        let data = instance_data(&scene.billboards, &order);
+        b.instances.write(floats_as_bytes(&data)); // glBufferSubData
+        // 3. The alpha test only in its mode: blending needs the soft texels.
+        let (test, reference) = match mode {
+            BillboardMode::AlphaTest => (BILLBOARD_ALPHA_TEST, scene.render.billboard_alpha_ref),
+            BillboardMode::Blend | BillboardMode::BlendSorted => (AlphaTest::Always, 0.5),
+        };
+        let blend = mode != BillboardMode::AlphaTest;
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
+            gl.viewport(0, 0, output.width, output.height);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_func(scene.render.depth_func.gl());
+            gl.depth_mask(true);
+            // Blend the colour; the output's alpha stays 1.
+            gl.color_mask(true, true, true, false);
+            if blend {
+                gl.enable(glow::BLEND);
+                gl.blend_func(glow::SRC_ALPHA, glow::ONE_MINUS_SRC_ALPHA);
+            }
+
+            p.use_program();
+            p.set_mat4("u_view", &u.view);
+            p.set_mat4("u_view_projection", &u.view_projection);
+            p.set_f32("u_sprite_count", b.sprite_count as f32);
+            p.set_vec3("u_light", billboard_light(scene));
+            p.set_bool("u_output_srgb", u.output_srgb);
+            p.set_i32("u_alpha_test", test.code());
+            p.set_f32("u_alpha_ref", reference);
+            p.set_i32("u_sprites", unit::DIFFUSE_TEXTURE as i32);
+            gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+            gl.bind_texture(glow::TEXTURE_2D, Some(b.sheet.id));
+            check_feedback_before_draw(gl);
+            gl.bind_vertex_array(Some(b.vao));
+            gl.draw_arrays_instanced(glow::TRIANGLE_STRIP, 0, 4, b.count as i32);
+
+            // Restore the state this pass changed.
+            gl.bind_vertex_array(None);
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            gl.active_texture(glow::TEXTURE0);
+            gl.use_program(None);
+            if blend {
+                gl.blend_func(glow::ONE, glow::ZERO);
+                gl.disable(glow::BLEND);
+            }
+            gl.color_mask(true, true, true, true);
+            gl.depth_func(glow::LESS);
+            gl.disable(glow::DEPTH_TEST);
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        }
+    }
+}
+
+/// Copy the G-buffer's depth into the output's (same DEPTH24_STENCIL8
+/// format): the billboards are depth tested against the opaque scene.
+fn copy_depth(gl: &glow::Context, gbuf: &Framebuffer, output: &Framebuffer) {
+    let (w, h) = (gbuf.width, gbuf.height);
+    unsafe {
+        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(gbuf.id));
+        gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, Some(output.id));
+        gl.blit_framebuffer(
+            0,
+            0,
+            w,
+            h,
+            0,
+            0,
+            w,
+            h,
+            glow::DEPTH_BUFFER_BIT,
+            glow::NEAREST,
+        );
+        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
+        gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, None);
+    }
+}
+
+fn floats_as_bytes(v: &[f32]) -> &[u8] {
+    // f32 is plain old data with no padding.
+    unsafe { std::slice::from_raw_parts(v.as_ptr() as *const u8, std::mem::size_of_val(v)) }
+}

@@ -137,3 +137,57 @@ fn back_to_front_draws_the_farthest_first() {
     assert_eq!(back_to_front(&b, &view), vec![2, 0, 1]);
     assert!(back_to_front(&[], &view).is_empty());
 }
+
+#[test]
+fn each_billboard_shows_its_own_sprite_from_the_sheet() {
+    // Two sprites of different sizes (the second is resized to the first's
+    // size in the sheet): white 8x8 on the left, red 4x16 on the right.
+    let dir = temp_dir("two-sprites");
+    solid_sprite(&dir, "white.png", 8, 8);
+    image::RgbaImage::from_pixel(4, 16, image::Rgba([255, 0, 0, 255]))
+        .save(dir.join("red.png"))
+        .unwrap();
+    let text = r#"
+[camera]
+projection = "orthographic"
+eye = [0.0, 0.0, 10.0]
+target = [0.0, 0.0, 0.0]
+half_height = 2.0
+near = 1.0
+far = 20.0
+
+[render]
+size = [200, 100]
+ambient = [1.0, 1.0, 1.0]
+
+[[billboards]]
+sprite = "white.png"
+center = [-2.0, 0.0, 0.0]
+size = [1.0, 1.0]
+
+[[billboards]]
+sprite = "red.png"
+center = [2.0, 0.0, 0.0]
+size = [1.0, 1.0]
+"#;
+    let scene = Scene::parse(text, &dir.join("scene.toml")).unwrap();
+    assert_eq!(scene.sprites.len(), 2);
+    let img = common::render(&scene, Output::Srgb8).image;
+    // 25 pixels a unit: the quads are 25x25 about x = 50 and x = 150.
+    let (left, right) = (img.get_pixel(50, 50).0, img.get_pixel(150, 50).0);
+    assert_eq!(left[..3], [255, 255, 255], "left billboard: {left:?}");
+    assert_eq!(right[..3], [255, 0, 0], "right billboard: {right:?}");
+    // Each is one solid rectangle of its own colour, no neighbour bled in.
+    for (x0, colour) in [(38u32, [255u8, 255, 255]), (138, [255, 0, 0])] {
+        for y in 40..60 {
+            for x in x0..x0 + 24 {
+                let p = img.get_pixel(x, y).0;
+                assert!(
+                    p[..3] == colour || x == x0 || x == x0 + 23,
+                    "pixel ({x}, {y}) is {p:?}, expected {colour:?}"
+                );
+            }
+        }
+    }
+    assert_eq!(lit_pixels(&img).len().abs_diff(2 * 25 * 25), 0);
+}

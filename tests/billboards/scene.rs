@@ -157,3 +157,21 @@ fn bad_modes_and_alpha_tests_name_the_key() {
         &["materials.leaf.alpha_ref"],
     );
 }
+
+#[test]
+fn a_malformed_sprite_is_an_error_when_the_renderer_loads_it() {
+    let dir = temp_dir("malformed");
+    std::fs::write(dir.join("bad.png"), b"not a png at all").unwrap();
+    let text = format!(
+        "{BASE}\n[[billboards]]\nsprite = \"bad.png\"\ncenter = [0.0, 0.0, 0.0]\nsize = [1.0, 1.0]\n"
+    );
+    let scene = Scene::parse(&text, &dir.join("scene.toml")).unwrap();
+    let ctx = crate::common::context(crate::common::backend());
+    let msg = match gloss::renderer::render_scene(&ctx, &scene, gloss::renderer::Output::Srgb8) {
+        Ok(_) => panic!("a malformed sprite should be refused"),
+        Err(e) => format!("{e:#}"),
+    };
+    for w in ["billboard sprite", "bad.png"] {
+        assert!(msg.contains(w), "the message should contain {w:?}:\n{msg}");
+    }
+}

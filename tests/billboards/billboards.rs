@@ -297,3 +297,32 @@ fn a_saved_forest_loads_to_the_same_billboards() {
         assert!(gloss::assets::is_file(s), "{}", s.display());
     }
 }
+
+#[test]
+fn gloss_plan_prints_the_billboard_pass() {
+    let run = |scene: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+            .arg("plan")
+            .arg(common::root().join("scenes").join(scene))
+            .output()
+            .expect("run gloss plan");
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let forest = run("billboards-forest.toml");
+    let line = forest
+        .lines()
+        .find(|l| l.contains("billboards") && l.contains("-> output"))
+        .unwrap_or_else(|| panic!("no billboards pass:\n{forest}"));
+    assert!(line.contains("500 billboards, 1 instanced quad"), "{line}");
+    assert!(
+        line.contains("src/techniques/billboards/billboards.rs"),
+        "{line}"
+    );
+    let plain = run("default.toml");
+    assert!(!plain.contains("billboards"), "{plain}");
+}

@@ -148,10 +148,14 @@ impl RunPasses for Billboards {
         }
         // 2. The draw order: sorted back to front, or as the scene lists them.
         let mode = scene.render.billboards;
-        let order = match mode {
+        let mut order = match mode {
             BillboardMode::BlendSorted => back_to_front(&scene.billboards, &u.view),
-            BillboardMode::Blend | BillboardMode::AlphaTest => (0..b.count).collect(),
+            BillboardMode::Blend | BillboardMode::AlphaTest => {
+                (0..scene.billboards.len()).collect()
+            }
         };
+        // The instance buffer holds the billboards it was made for.
+        order.truncate(b.count);
         let data = instance_data(&scene.billboards, &order);
         b.instances.write(floats_as_bytes(&data)); // glBufferSubData
         // 3. The alpha test only in its mode: blending needs the soft texels.
@@ -186,7 +190,7 @@ impl RunPasses for Billboards {
             gl.bind_texture(glow::TEXTURE_2D, Some(b.sheet.id));
             check_feedback_before_draw(gl);
             gl.bind_vertex_array(Some(b.vao));
-            gl.draw_arrays_instanced(glow::TRIANGLE_STRIP, 0, 4, b.count as i32);
+            gl.draw_arrays_instanced(glow::TRIANGLE_STRIP, 0, 4, order.len() as i32);
 
             // Restore the state this pass changed.
             gl.bind_vertex_array(None);

@@ -164,6 +164,7 @@ impl RunPasses for Billboards {
             BillboardMode::Blend | BillboardMode::BlendSorted => (AlphaTest::Always, 0.5),
         };
         let blend = mode != BillboardMode::AlphaTest;
+        // 4. Over the opaque image, depth tested; blended in the blend modes.
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
             gl.viewport(0, 0, output.width, output.height);
@@ -177,6 +178,7 @@ impl RunPasses for Billboards {
                 gl.blend_func(glow::SRC_ALPHA, glow::ONE_MINUS_SRC_ALPHA);
             }
 
+            // 5. One instanced quad per billboard, corners from gl_VertexID.
             p.use_program();
             p.set_mat4("u_view", &u.view);
             p.set_mat4("u_view_projection", &u.view_projection);

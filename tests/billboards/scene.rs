@@ -32,6 +32,22 @@ fn fails_text(test: &str, text: &str, words: &[&str]) {
             "{test}: the message should contain {w:?}:\n{msg}"
         );
     }
+    // `gloss plan` says the same, cleanly: "error:", a non-zero exit, no panic.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .arg("plan")
+        .arg(&path)
+        .output()
+        .expect("run gloss plan");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{test}: gloss plan should fail");
+    assert!(stderr.starts_with("error:"), "{test}: {stderr}");
+    assert!(!stderr.contains("panicked"), "{test}: {stderr}");
+    for w in words {
+        assert!(
+            stderr.contains(w),
+            "{test}: gloss plan should say {w:?}:\n{stderr}"
+        );
+    }
 }
 
 #[test]
@@ -174,4 +190,34 @@ fn a_malformed_sprite_is_an_error_when_the_renderer_loads_it() {
     for w in ["billboard sprite", "bad.png"] {
         assert!(msg.contains(w), "the message should contain {w:?}:\n{msg}");
     }
+}
+
+#[test]
+fn the_mode_and_the_reference_are_set_keys() {
+    let path = crate::common::root().join("scenes/billboards-forest.toml");
+    let set = |kv: &str| Scene::load_with(&path, &[kv.to_string()]);
+    let s = set("render.billboards=blend_sorted").unwrap();
+    assert_eq!(
+        s.render.billboards,
+        gloss::scene::BillboardMode::BlendSorted
+    );
+    assert_eq!(
+        set("render.billboard_alpha_ref=0.25")
+            .unwrap()
+            .render
+            .billboard_alpha_ref,
+        0.25
+    );
+    let msg = format!("{:#}", set("render.billboards=sorted").unwrap_err());
+    for w in [
+        "--set render.billboards=sorted",
+        "alpha_test, blend or blend_sorted",
+    ] {
+        assert!(msg.contains(w), "{msg}");
+    }
+    let msg = format!("{:#}", set("render.billboard_alpha_ref=2").unwrap_err());
+    assert!(
+        msg.contains("render.billboard_alpha_ref: expected a number in 0..=1"),
+        "{msg}"
+    );
 }

@@ -93,12 +93,13 @@ fn tree() -> image::RgbaImage {
 }
 
 /// A tuft of grass: fourteen blades, each a sliver from the bottom edge to a
-/// tip, leaning and tapering.
+/// tip, leaning and tapering; at least 8 texels clear of the side edges, so
+/// a neighbour in a sprite sheet never bleeds in.
 fn grass() -> image::RgbaImage {
     let blades: Vec<(f32, f32, f32)> = (0..14)
         .map(|i| {
-            let base = 14.0 + 100.0 * hash2(i, 1);
-            let lean = 40.0 * (hash2(i, 2) - 0.5);
+            let base = 24.0 + 80.0 * hash2(i, 1);
+            let lean = 30.0 * (hash2(i, 2) - 0.5);
             let tip = 10.0 + 50.0 * hash2(i, 3);
             (base, lean, tip)
         })

@@ -14,7 +14,7 @@
 //!   intersect (a tree's upright quad and a grass tuft's tilted one): no
 //!   order of whole quads is right there, while the alpha test lets the
 //!   depth test order every pixel. At most INTERSECTING_MAX_FRAC of the
-//!   pixels (25 in this scene).
+//!   pixels (26 in this scene).
 //! * blend (unsorted) against blend_sorted: the notes' "big problem". Where a
 //!   near billboard was drawn first, its transparent texels wrote depth and
 //!   the billboard behind is depth-rejected there: the sky or ground shows

@@ -3,6 +3,7 @@
 // GL_LEQUAL against the G-buffer's depth) and combine the accumulated light
 // with the material, at full precision:  kd (ambient + D) + ks S.
 #include "common/material.glsl"
+#include "common/alpha_test.glsl"
 #include "common/lighting_output.glsl"
 in vec3 v_position;
 in vec3 v_normal;
@@ -14,6 +15,7 @@ uniform vec3 u_ambient;
 out vec4 frag_color;
 
 void main() {
+    alpha_test(material_alpha(v_uv));
     vec3 D = vec3(0.0), S = vec3(0.0);
     if (u_has_light) {
         vec2 uv = gl_FragCoord.xy / textureSize(u_diffuse_light, 0).xy;

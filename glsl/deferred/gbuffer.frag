@@ -6,6 +6,7 @@
 //   depth: the depth buffer itself; position is rebuilt from it.
 #include "common/normals.glsl"
 #include "common/material.glsl"
+#include "common/alpha_test.glsl"
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
@@ -15,6 +16,7 @@ layout(location = 1) out vec4 g_albedo;
 layout(location = 2) out vec4 g_specular;
 
 void main() {
+    alpha_test(material_alpha(v_uv));
     g_normal_shininess = vec4(safe_normal(v_normal, v_position), u_shininess);
     g_albedo = vec4(material_diffuse(v_uv), 1.0);
     g_specular = vec4(u_specular, 1.0);

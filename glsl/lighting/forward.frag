@@ -3,6 +3,7 @@
 #include "common/lighting.glsl"
 #include "common/normals.glsl"
 #include "common/material.glsl"
+#include "common/alpha_test.glsl"
 #include "common/lighting_output.glsl"
 
 in vec3 v_position;
@@ -16,6 +17,7 @@ uniform vec3 u_ambient;
 out vec4 frag_color;
 
 void main() {
+    alpha_test(material_alpha(v_uv));
     vec3 N = safe_normal(v_normal, v_position);
     vec3 V = normalize(u_eye - v_position);
     vec3 kd = material_diffuse(v_uv);

@@ -2,6 +2,7 @@
 // Gouraud shading: the light was computed per vertex; only the material is per fragment.
 #include "common/lighting_output.glsl"
 #include "common/material.glsl"
+#include "common/alpha_test.glsl"
 in vec3 v_diffuse_light;
 in vec3 v_specular_light;
 in vec2 v_uv;
@@ -9,6 +10,7 @@ uniform vec3 u_ambient;
 out vec4 frag_color;
 
 void main() {
+    alpha_test(material_alpha(v_uv));
     vec3 kd = material_diffuse(v_uv);
     vec3 c = kd * (u_ambient + v_diffuse_light) + u_specular * v_specular_light;
     frag_color = output_color(c);

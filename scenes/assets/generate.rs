@@ -6,7 +6,10 @@
 //!   a mirror's reflection (a lake's surface);
 //! * `knot.obj`: a (2, 3) torus knot tube, 3072 triangles, with normals and uvs;
 //! * `rock.obj`: a low-poly displaced icosphere, uvs but NO normals, so that
-//!   loading it exercises `geometry::compute_normals`.
+//!   loading it exercises `geometry::compute_normals`;
+//! * `tree.png`, `grass.png`: 128x128 RGBA billboard sprites with real alpha
+//!   (1 on the tree, 0 around it, a one-texel soft edge); the transparent
+//!   texels keep the sprite's colour so filtering brings in no dark fringe.
 //!
 //! Run with `cargo run --release --example gen_assets`. Output is deterministic.
 
@@ -21,6 +24,8 @@ fn main() -> Result<()> {
     write_png(&dir.join("checker.png"), checker())?;
     write_png(&dir.join("bricks.png"), bricks())?;
     write_png(&dir.join("ripples.png"), ripples())?;
+    write_rgba_png(&dir.join("tree.png"), tree())?;
+    write_rgba_png(&dir.join("grass.png"), grass())?;
     write_obj(
         &dir.join("knot.obj"),
         &torus_knot(2, 3, 128, 12),
@@ -41,6 +46,85 @@ fn write_png(path: &Path, img: image::RgbImage) -> Result<()> {
         .with_context(|| format!("writing {}", path.display()))?;
     println!("wrote {}", path.display());
     Ok(())
+}
+
+fn write_rgba_png(path: &Path, img: image::RgbaImage) -> Result<()> {
+    img.save(path)
+        .with_context(|| format!("writing {}", path.display()))?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
+
+/// Coverage of a shape at signed distance `d` (pixels, negative inside):
+/// a one-pixel soft edge.
+fn coverage(d: f32) -> f32 {
+    (0.5 - d).clamp(0.0, 1.0)
+}
+
+fn rgba(c: [f32; 3], alpha: f32) -> image::Rgba<u8> {
+    let b = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
+    image::Rgba([b(c[0]), b(c[1]), b(c[2]), b(alpha)])
+}
+
+/// A tree: a brown trunk under a crown of four overlapping discs, the
+/// leaves' shade varied by noise and lit from the upper left.
+fn tree() -> image::RgbaImage {
+    let discs = [
+        (64.0, 50.0, 34.0),
+        (42.0, 68.0, 22.0),
+        (86.0, 68.0, 22.0),
+        (64.0, 26.0, 22.0),
+    ];
+    image::RgbaImage::from_fn(128, 128, |x, y| {
+        let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
+        let leafy = 2.5 * hash2(x / 3, y / 3);
+        let crown = discs
+            .iter()
+            .map(|&(cx, cy, r)| (px - cx).hypot(py - cy) - r + leafy)
+            .fold(f32::MAX, f32::min);
+        let trunk = ((px - 64.0).abs() - 6.0).max(80.0 - py).max(py - 126.0);
+        let (a_crown, a_trunk) = (coverage(crown), coverage(trunk));
+        let shade = 0.75 + 0.25 * hash2(x / 2 + 7, y / 2) - 0.002 * (px + py - 100.0);
+        let leaves = [0.16 * shade, 0.42 * shade, 0.14 * shade];
+        let bark = [0.36, 0.23, 0.13];
+        if a_crown >= a_trunk {
+            rgba(leaves, a_crown.max(a_trunk))
+        } else {
+            rgba(bark, a_trunk)
+        }
+    })
+}
+
+/// A tuft of grass: fourteen blades, each a sliver from the bottom edge to a
+/// tip, leaning and tapering; at least 8 texels clear of the side edges, so
+/// a neighbour in a sprite sheet never bleeds in.
+fn grass() -> image::RgbaImage {
+    let blades: Vec<(f32, f32, f32)> = (0..14)
+        .map(|i| {
+            let base = 24.0 + 80.0 * hash2(i, 1);
+            let lean = 30.0 * (hash2(i, 2) - 0.5);
+            let tip = 10.0 + 50.0 * hash2(i, 3);
+            (base, lean, tip)
+        })
+        .collect();
+    image::RgbaImage::from_fn(128, 128, |x, y| {
+        let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
+        let mut best = (0.0f32, 0usize);
+        for (i, &(base, lean, tip)) in blades.iter().enumerate() {
+            if py < tip {
+                continue;
+            }
+            let t = (py - tip) / (128.0 - tip); // 0 at the tip, 1 at the base
+            let centre = base + lean * (1.0 - t);
+            let half_width = 0.5 + 3.0 * t;
+            let a = coverage((px - centre).abs() - half_width);
+            if a > best.0 {
+                best = (a, i);
+            }
+        }
+        let shade = 0.8 + 0.4 * hash2(best.1 as u32, 4) - 0.3 * (py / 128.0);
+        rgba([0.22 * shade, 0.55 * shade, 0.15 * shade], best.0)
+    })
 }
 
 /// A small integer hash mapped to 0..1 (deterministic "noise").

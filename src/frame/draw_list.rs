@@ -4,6 +4,7 @@
 //! making its own GL state changes per object (glFrontFace, the diffuse
 //! texture) in its own file; this module only sets uniforms.
 
+use crate::frame::billboards::BillboardDraws;
 use crate::geometry::{self, MeshData};
 use crate::gl::Gl;
 use crate::gl::mesh::Mesh;
@@ -35,6 +36,9 @@ pub struct DrawItem {
     pub mirror: bool,
     /// A mirror's roughening texture (linear greyscale), if it has one.
     pub roughness: Option<usize>,
+    /// The material's alpha test (notes 05): `AlphaTest::code` and the reference.
+    pub alpha_test: i32,
+    pub alpha_ref: f32,
 }
 
 impl DrawItem {
@@ -49,6 +53,8 @@ pub struct DrawList {
     pub items: Vec<DrawItem>,
     pub meshes: Vec<Mesh>,
     pub textures: Vec<Texture>,
+    /// The scene's billboards (src/frame/billboards.rs).
+    pub billboards: BillboardDraws,
 }
 
 impl DrawList {
@@ -98,12 +104,15 @@ impl DrawList {
                 texture,
                 mirror: o.mirror.is_some(),
                 roughness,
+                alpha_test: m.alpha_test.code(),
+                alpha_ref: m.alpha_ref,
             });
         }
         Ok(DrawList {
             items,
             meshes,
             textures,
+            billboards: BillboardDraws::new(gl, scene)?,
         })
     }
 
@@ -119,6 +128,8 @@ impl DrawList {
             d.diffuse = m.diffuse;
             d.specular = m.specular;
             d.shininess = m.shininess;
+            d.alpha_test = m.alpha_test.code();
+            d.alpha_ref = m.alpha_ref;
         }
     }
 
@@ -140,6 +151,8 @@ impl DrawList {
         p.set_vec3("u_specular", d.specular);
         p.set_f32("u_shininess", d.shininess);
         p.set_bool("u_has_diffuse_texture", d.texture.is_some());
+        p.set_i32("u_alpha_test", d.alpha_test);
+        p.set_f32("u_alpha_ref", d.alpha_ref);
     }
 }
 

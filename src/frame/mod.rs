@@ -13,6 +13,7 @@
 //! - `timing`: pass times around glFinish.
 //! - `views`: the camera's view and the reflected views mirrors add.
 
+pub mod billboards;
 pub mod draw_list;
 pub mod gbuffer;
 pub mod lights;

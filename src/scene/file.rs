@@ -2,8 +2,11 @@
 //! serde's defaults for every key that may be left out. `resolve` checks these
 //! values and turns them into a `Scene`.
 
+use super::billboards::{BillboardFieldFile, BillboardFile};
 use super::mirrors::MirrorFile;
-use super::settings::{Accumulation, DepthFunc, MirrorOrder, RenderPath, Shading};
+use super::settings::{
+    Accumulation, AlphaTest, BillboardMode, DepthFunc, MirrorOrder, RenderPath, Shading,
+};
 use serde::Deserialize;
 use std::collections::HashMap;
 
@@ -21,6 +24,10 @@ pub(super) struct SceneFile {
     pub(super) materials: HashMap<String, MaterialFile>,
     #[serde(default)]
     pub(super) objects: Vec<ObjectFile>,
+    #[serde(default)]
+    pub(super) billboards: Vec<BillboardFile>,
+    #[serde(default)]
+    pub(super) billboard_fields: Vec<BillboardFieldFile>,
 }
 
 #[derive(Deserialize, Debug)]
@@ -77,6 +84,8 @@ pub(super) struct RenderFile {
     pub(super) mirror_clip: bool,
     /// glFrontFace(GL_CW) while drawing a reflection (it reverses the winding).
     pub(super) mirror_winding: bool,
+    pub(super) billboards: BillboardMode,
+    pub(super) billboard_alpha_ref: f32,
 }
 
 impl Default for RenderFile {
@@ -95,6 +104,8 @@ impl Default for RenderFile {
             mirror_depth: 1,
             mirror_clip: true,
             mirror_winding: true,
+            billboards: BillboardMode::AlphaTest,
+            billboard_alpha_ref: 0.5,
         }
     }
 }
@@ -168,6 +179,18 @@ pub(super) struct MaterialFile {
     pub(super) specular: [f32; 3],
     #[serde(default = "shininess_default")]
     pub(super) shininess: f32,
+    /// The alpha test on the diffuse texture's alpha (notes 05, "Alpha Test").
+    #[serde(default = "always")]
+    pub(super) alpha_test: AlphaTest,
+    #[serde(default = "half")]
+    pub(super) alpha_ref: f32,
+}
+
+fn always() -> AlphaTest {
+    AlphaTest::Always
+}
+fn half() -> f32 {
+    0.5
 }
 
 fn grey() -> [f32; 3] {

@@ -6,7 +6,7 @@
 //! lists the knobs it reads in its registration.
 
 use super::RenderSettings;
-use super::settings::{Accumulation, DepthFunc, MirrorOrder, RenderPath, Shading};
+use super::settings::{Accumulation, BillboardMode, DepthFunc, MirrorOrder, RenderPath, Shading};
 use glam::Vec3;
 
 /// What a knob holds.
@@ -230,6 +230,36 @@ pub static MIRROR_WINDING: Knob = Knob {
     },
 };
 
+pub static BILLBOARDS: Knob = Knob {
+    key: "render.billboards",
+    label: "billboards",
+    help: "notes 05: alpha_test (discard alpha < 0.5), blend (unsorted: holes), blend_sorted (back to front)",
+    kind: Kind::Choice(BillboardMode::WORDS),
+    get: |r| Value::Choice(index(BillboardMode::ALL, r.billboards)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.billboards = BillboardMode::ALL[i];
+        }
+    },
+};
+
+pub static BILLBOARD_ALPHA_REF: Knob = Knob {
+    key: "render.billboard_alpha_ref",
+    label: "billboard alpha reference",
+    help: "the alpha test passes alpha >= this (notes 05: \"do not let alpha < 0.5 pass through\")",
+    kind: Kind::Number {
+        min: 0.0,
+        max: 1.0,
+        log: false,
+    },
+    get: |r| Value::Number(r.billboard_alpha_ref),
+    set: |r, v| {
+        if let Value::Number(x) = v {
+            r.billboard_alpha_ref = x;
+        }
+    },
+};
+
 /// Every knob, in the order the panel shows the frame-wide ones.
 pub static ALL: &[&Knob] = &[
     &PATH,
@@ -244,6 +274,8 @@ pub static ALL: &[&Knob] = &[
     &MIRROR_DEPTH,
     &MIRROR_CLIP,
     &MIRROR_WINDING,
+    &BILLBOARDS,
+    &BILLBOARD_ALPHA_REF,
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

@@ -7,9 +7,9 @@ use glam::Vec3;
 
 /// A small deterministic generator (SplitMix64) so scenes need no rand crate
 /// and the same seed gives the same lights everywhere.
-struct SplitMix(u64);
+pub(super) struct SplitMix(pub(super) u64);
 impl SplitMix {
-    fn next_f32(&mut self) -> f32 {
+    pub(super) fn next_f32(&mut self) -> f32 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);

@@ -9,6 +9,8 @@
 //! written in TOML (`file`), checking it and turning it into a [`Scene`]
 //! (`resolve`), and the seeded many-lights generator (`light_grid`).
 
+mod alpha_test;
+mod billboards;
 mod file;
 pub mod knobs;
 mod light_grid;
@@ -18,9 +20,14 @@ mod resolve;
 mod save;
 mod settings;
 
+pub use alpha_test::BILLBOARD_ALPHA_TEST;
+pub use billboards::{Billboard, MAX_BILLBOARDS};
 pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
-pub use settings::{Accumulation, DepthFunc, MirrorOrder, RenderPath, Shading};
+pub use settings::{
+    Accumulation, AlphaTest, BillboardKind, BillboardMode, DepthFunc, MirrorOrder, RenderPath,
+    Shading,
+};
 
 use crate::assets;
 use crate::math;
@@ -87,6 +94,10 @@ pub struct RenderSettings {
     pub mirror_depth: u32,
     pub mirror_clip: bool,
     pub mirror_winding: bool,
+    /// How billboards are drawn: alpha test, blending, or sorted blending (notes 05).
+    pub billboards: BillboardMode,
+    /// The billboards' alpha test passes alpha >= this (notes 05: 0.5).
+    pub billboard_alpha_ref: f32,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -130,6 +141,9 @@ pub struct Material {
     pub diffuse_texture: Option<PathBuf>,
     pub specular: Vec3,
     pub shininess: f32,
+    /// Alpha test on the diffuse texture's alpha: op and reference (notes 05).
+    pub alpha_test: AlphaTest,
+    pub alpha_ref: f32,
 }
 
 /// Where a mesh comes from.
@@ -210,6 +224,9 @@ pub struct Scene {
     pub grid_lights: Option<usize>,
     pub materials: Vec<Material>,
     pub objects: Vec<Object>,
+    /// Billboard sprites (RGBA PNGs), each once, and the billboards (notes 05).
+    pub sprites: Vec<PathBuf>,
+    pub billboards: Vec<Billboard>,
 }
 
 impl Scene {

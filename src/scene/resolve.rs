@@ -4,7 +4,7 @@
 //! One function per section of the file, in the order they are checked.
 
 use super::file::SceneFile;
-use super::{Camera, Material, MeshSource, Object, Projection, RenderSettings, Scene};
+use super::{AlphaTest, Camera, Material, MeshSource, Object, Projection, RenderSettings, Scene};
 use crate::assets;
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
@@ -60,6 +60,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
             render.mirror_depth
         );
     }
+    let (sprites, billboards) = super::billboards::billboards(&f, base)?;
 
     Ok(Scene {
         name,
@@ -70,6 +71,8 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         lights,
         materials,
         objects,
+        sprites,
+        billboards,
     })
 }
 
@@ -181,6 +184,14 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         mirror_clip: r.mirror_clip,
         mirror_winding: r.mirror_winding,
+        billboards: r.billboards,
+        billboard_alpha_ref: {
+            let a = r.billboard_alpha_ref;
+            if !(a.is_finite() && (0.0..=1.0).contains(&a)) {
+                bail!("render.billboard_alpha_ref: expected a number in 0..=1, found {a}");
+            }
+            a
+        },
     })
 }
 
@@ -195,6 +206,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         diffuse_texture: None,
         specular: Vec3::splat(0.3),
         shininess: 32.0,
+        alpha_test: AlphaTest::Always,
+        alpha_ref: 0.5,
     }];
     let mut material_index = HashMap::new();
     for n in names {
@@ -207,6 +220,13 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
                 "{}: expected a number in 1..=4096, found {}",
                 key("shininess"),
                 m.shininess
+            );
+        }
+        if !(m.alpha_ref.is_finite() && (0.0..=1.0).contains(&m.alpha_ref)) {
+            bail!(
+                "{}: expected a number in 0..=1, found {}",
+                key("alpha_ref"),
+                m.alpha_ref
             );
         }
         let diffuse_texture = match &m.diffuse_texture {
@@ -230,6 +250,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             diffuse_texture,
             specular: Vec3::from(m.specular),
             shininess: m.shininess,
+            alpha_test: m.alpha_test,
+            alpha_ref: m.alpha_ref,
         });
     }
     Ok((materials, material_index))

@@ -104,6 +104,16 @@ impl Scene {
                 }
             }
         }
+        // Billboard sprites (`[[billboards]]`, `[[billboard_fields]]`).
+        for list in ["billboards", "billboard_fields"] {
+            if let Some(items) = table.get_mut(list).and_then(toml::Value::as_array_mut) {
+                for b in items {
+                    if let Some(s) = b.get_mut("sprite") {
+                        fix(s);
+                    }
+                }
+            }
+        }
         toml::to_string(&table).context("writing the scene as TOML")
     }
 

@@ -135,3 +135,45 @@ impl Accumulation {
         }
     }
 }
+
+setting! {
+    /// The alpha test (notes 05, "Alpha Test"): "if (alpha_fragment op
+    /// alpha_reference) pass fragment on". GL 3.3 core has no fixed-function
+    /// alpha test: `discard` in glsl/common/alpha_test.glsl does it, and
+    /// src/scene/alpha_test.rs is its CPU twin.
+    pub enum AlphaTest {
+        /// Always let the fragment through (no test: what a material without the key gets).
+        Always = "always",
+        /// Never let the fragment through.
+        Never = "never",
+        Less = "less",
+        Lequal = "lequal",
+        Equal = "equal",
+        Notequal = "notequal",
+        Greater = "greater",
+        /// The notes' default for billboards: pass alpha >= 0.5, discard alpha < 0.5.
+        Gequal = "gequal",
+    }
+}
+
+setting! {
+    /// How billboards are drawn (notes 05, "Alpha Test and Billboards").
+    pub enum BillboardMode {
+        /// The alpha test (discard alpha < 0.5): no blending, no sorting.
+        AlphaTest = "alpha_test",
+        /// Alpha blending in scene order with depth writes on: the notes' "big problem".
+        Blend = "blend",
+        /// Alpha blending, sorted back to front by view depth every frame.
+        BlendSorted = "blend_sorted",
+    }
+}
+
+setting! {
+    /// Which way a billboard turns to the camera.
+    pub enum BillboardKind {
+        /// Faces the camera: parallel to the image plane.
+        Spherical = "spherical",
+        /// Turns only about the world's up axis (y) and stays upright: trees.
+        Cylindrical = "cylindrical",
+    }
+}

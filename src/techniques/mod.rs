@@ -9,6 +9,7 @@
 //! of its own chapter; never the renderer or another chapter's technique
 //! (tests/architecture.rs checks it).
 
+pub mod billboards;
 pub mod deferred;
 pub mod lighting;
 pub mod stencil;
@@ -28,6 +29,7 @@ pub static ALL: &[&Technique] = &[
     &deferred::deferred_lighting::DEFERRED_LIGHTING,
     &deferred::composite::COMPOSITE,
     &stencil::mirror::MIRROR,
+    &billboards::billboards::BILLBOARDS,
 ];
 
 /// The frame plan of `scene`: the registered techniques' passes and targets.

@@ -1,0 +1,180 @@
+//! Billboards in a scene file (notes 05, "Billboards"): textured quads that
+//! face the camera, given one by one (`[[billboards]]`) or scattered by a
+//! seeded generator (`[[billboard_fields]]`, a forest or a meadow).
+//!
+//! ```toml
+//! [[billboards]]
+//! sprite = "assets/tree.png"   # RGBA PNG; alpha 0 where the tree is not
+//! center = [0.0, 2.0, 0.0]     # the quad's centre, world space
+//! size = [3.0, 4.0]            # width, height
+//! kind = "cylindrical"         # or "spherical" (the default)
+//!
+//! [[billboard_fields]]
+//! sprite = "assets/grass.png"
+//! kind = "spherical"           # "cylindrical" is the default
+//! count = 300
+//! seed = 7
+//! area = [-10.0, 10.0, -10.0, 10.0]   # [xmin, xmax, zmin, zmax]
+//! ground = 0.0                 # the bottom edges stand at this height
+//! height = [0.5, 1.0]          # each billboard's height, drawn in this range
+//! aspect = 1.0                 # width / height
+//! ```
+
+use super::file::SceneFile;
+use super::light_grid::SplitMix;
+use super::resolve::finite;
+use super::settings::BillboardKind;
+use crate::assets;
+use anyhow::{Result, bail};
+use glam::{Vec2, Vec3};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// The most billboards a scene may have (lists and fields together).
+pub const MAX_BILLBOARDS: usize = 100_000;
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+pub(super) struct BillboardFile {
+    pub(super) sprite: String,
+    pub(super) center: [f32; 3],
+    pub(super) size: [f32; 2],
+    #[serde(default = "spherical")]
+    pub(super) kind: BillboardKind,
+}
+
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+pub(super) struct BillboardFieldFile {
+    pub(super) sprite: String,
+    #[serde(default = "cylindrical")]
+    pub(super) kind: BillboardKind,
+    pub(super) count: usize,
+    #[serde(default = "one_u64")]
+    pub(super) seed: u64,
+    /// [xmin, xmax, zmin, zmax]
+    pub(super) area: [f32; 4],
+    #[serde(default)]
+    pub(super) ground: f32,
+    /// [min, max] height.
+    pub(super) height: [f32; 2],
+    /// width / height
+    #[serde(default = "one")]
+    pub(super) aspect: f32,
+}
+
+fn spherical() -> BillboardKind {
+    BillboardKind::Spherical
+}
+fn cylindrical() -> BillboardKind {
+    BillboardKind::Cylindrical
+}
+fn one_u64() -> u64 {
+    1
+}
+fn one() -> f32 {
+    1.0
+}
+
+/// One billboard: a quad of `size` (width, height) about `center`, showing
+/// sprite `sprite` (an index into `Scene::sprites`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Billboard {
+    pub center: Vec3,
+    pub size: Vec2,
+    pub sprite: usize,
+    pub kind: BillboardKind,
+}
+
+/// The sprites (PNG paths, each once, in order of first use) and the
+/// billboards: the `[[billboards]]` list, then each field's, in file order.
+pub(super) fn billboards(f: &SceneFile, base: &Path) -> Result<(Vec<PathBuf>, Vec<Billboard>)> {
+    let mut sprites: Vec<PathBuf> = Vec::new();
+    let mut sprite_index = |key: &str, written: &str| -> Result<usize> {
+        let p = super::resolve::relative_to(base, written);
+        if let Some(i) = sprites.iter().position(|s| *s == p) {
+            return Ok(i);
+        }
+        if !written.to_ascii_lowercase().ends_with(".png") {
+            bail!("{key}: expected an RGBA .png file, found \"{written}\"");
+        }
+        if !assets::is_file(&p) {
+            bail!("{key}: sprite file {} does not exist", p.display());
+        }
+        sprites.push(p);
+        Ok(sprites.len() - 1)
+    };
+    let total: usize = f.billboards.len()
+        + f.billboard_fields
+            .iter()
+            .map(|g| g.count)
+            .fold(0, usize::saturating_add);
+    if total > MAX_BILLBOARDS {
+        bail!("billboards: at most {MAX_BILLBOARDS} billboards in a scene, found {total}");
+    }
+    let mut out = Vec::with_capacity(total);
+    for (i, b) in f.billboards.iter().enumerate() {
+        let key = |k: &str| format!("billboards[{i}].{k}");
+        finite(&key("center"), &b.center)?;
+        positive(&key("size"), &b.size)?;
+        out.push(Billboard {
+            center: Vec3::from(b.center),
+            size: Vec2::from(b.size),
+            sprite: sprite_index(&key("sprite"), &b.sprite)?,
+            kind: b.kind,
+        });
+    }
+    for (i, g) in f.billboard_fields.iter().enumerate() {
+        let key = |k: &str| format!("billboard_fields[{i}].{k}");
+        let [x0, x1, z0, z1] = g.area;
+        finite(&key("area"), &g.area)?;
+        if !(x0 <= x1 && z0 <= z1) {
+            bail!(
+                "{}: expected [xmin, xmax, zmin, zmax] with min <= max, found {:?}",
+                key("area"),
+                g.area
+            );
+        }
+        finite(&key("ground"), &[g.ground])?;
+        positive(&key("height"), &g.height)?;
+        if g.height[0] > g.height[1] {
+            bail!(
+                "{}: expected [min, max] with min <= max, found {:?}",
+                key("height"),
+                g.height
+            );
+        }
+        positive(&key("aspect"), &[g.aspect])?;
+        let sprite = sprite_index(&key("sprite"), &g.sprite)?;
+        out.extend(generate(g, sprite));
+    }
+    Ok((sprites, out))
+}
+
+fn positive(key: &str, v: &[f32]) -> Result<()> {
+    finite(key, v)?;
+    if v.iter().any(|x| *x <= 0.0) {
+        bail!("{key}: expected values > 0, found {v:?}");
+    }
+    Ok(())
+}
+
+/// A field's billboards: uniform in the area, standing on the ground, the
+/// same ones for the same seed everywhere.
+fn generate(g: &BillboardFieldFile, sprite: usize) -> Vec<Billboard> {
+    let mut rng = SplitMix(g.seed);
+    let [x0, x1, z0, z1] = g.area;
+    (0..g.count)
+        .map(|_| {
+            let x = x0 + (x1 - x0) * rng.next_f32();
+            let z = z0 + (z1 - z0) * rng.next_f32();
+            let h = g.height[0] + (g.height[1] - g.height[0]) * rng.next_f32();
+            Billboard {
+                center: Vec3::new(x, g.ground + 0.5 * h, z),
+                size: Vec2::new(h * g.aspect, h),
+                sprite,
+                kind: g.kind,
+            }
+        })
+        .collect()
+}

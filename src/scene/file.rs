@@ -69,6 +69,7 @@ pub(super) struct RenderFile {
     pub(super) cutoff: f32,
     pub(super) stencil_volumes: bool,
     pub(super) accumulation: Accumulation,
+    pub(super) sort_transparent: bool,
 }
 
 impl Default for RenderFile {
@@ -83,6 +84,7 @@ impl Default for RenderFile {
             cutoff: 5.0 / 256.0,
             stencil_volumes: false,
             accumulation: Accumulation::Rgba16f,
+            sort_transparent: true,
         }
     }
 }
@@ -156,6 +158,11 @@ pub(super) struct MaterialFile {
     pub(super) specular: [f32; 3],
     #[serde(default = "shininess_default")]
     pub(super) shininess: f32,
+    /// 1 = opaque; below 1 the object is transparent (notes 01 §4.5, §6.1).
+    #[serde(default = "one")]
+    pub(super) opacity: f32,
+    /// Overrides `render.depth_func` for this material's objects.
+    pub(super) depth_func: Option<DepthFunc>,
 }
 
 fn grey() -> [f32; 3] {

@@ -78,6 +78,9 @@ pub struct RenderSettings {
     pub stencil_volumes: bool,
     /// Internal format of the light accumulation target (RGBA16F or RGBA32F).
     pub accumulation: Accumulation,
+    /// Draw transparent objects back to front (notes 01 §6.1); false shows
+    /// what goes wrong unsorted.
+    pub sort_transparent: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -121,6 +124,17 @@ pub struct Material {
     pub diffuse_texture: Option<PathBuf>,
     pub specular: Vec3,
     pub shininess: f32,
+    /// Alpha (notes 01 §4.5): 1 = opaque; below 1 the transparency pass draws it.
+    pub opacity: f32,
+    /// The depth test for this material's objects (None: `render.depth_func`).
+    pub depth_func: Option<DepthFunc>,
+}
+
+impl Material {
+    /// Drawn by the transparency pass, not by the opaque passes.
+    pub fn is_transparent(&self) -> bool {
+        self.opacity < 1.0
+    }
 }
 
 /// Where a mesh comes from.

@@ -149,6 +149,7 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         stencil_volumes: r.stencil_volumes,
         accumulation: r.accumulation,
+        sort_transparent: r.sort_transparent,
     })
 }
 
@@ -163,6 +164,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         diffuse_texture: None,
         specular: Vec3::splat(0.3),
         shininess: 32.0,
+        opacity: 1.0,
+        depth_func: None,
     }];
     let mut material_index = HashMap::new();
     for n in names {
@@ -175,6 +178,13 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
                 "{}: expected a number in 1..=4096, found {}",
                 key("shininess"),
                 m.shininess
+            );
+        }
+        if !(m.opacity.is_finite() && (0.0..=1.0).contains(&m.opacity)) {
+            bail!(
+                "{}: expected a number in [0, 1] (1 = opaque), found {}",
+                key("opacity"),
+                m.opacity
             );
         }
         let diffuse_texture = match &m.diffuse_texture {
@@ -198,6 +208,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             diffuse_texture,
             specular: Vec3::from(m.specular),
             shininess: m.shininess,
+            opacity: m.opacity,
+            depth_func: m.depth_func,
         });
     }
     Ok((materials, material_index))

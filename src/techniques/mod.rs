@@ -9,6 +9,7 @@
 //! of its own chapter; never the renderer or another chapter's technique
 //! (tests/architecture.rs checks it).
 
+pub mod blending;
 pub mod deferred;
 pub mod lighting;
 
@@ -26,6 +27,7 @@ pub static ALL: &[&Technique] = &[
     &deferred::stencil_light_volumes::STENCIL_LIGHT_VOLUMES,
     &deferred::deferred_lighting::DEFERRED_LIGHTING,
     &deferred::composite::COMPOSITE,
+    &blending::transparency::TRANSPARENCY,
 ];
 
 /// The frame plan of `scene`: the registered techniques' passes and targets.

@@ -173,7 +173,8 @@ impl DeferredLighting {
             gl.active_texture(glow::TEXTURE0 + unit::SPECULAR_LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[1].id));
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in &f.draws.items {
+            // Transparent objects are drawn later, sorted (blending/transparency.rs).
+            for d in f.draws.items.iter().filter(|d| !d.transparent) {
                 // A mirroring model matrix turns counter-clockwise triangles clockwise.
                 gl.front_face(d.front_face());
                 gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));

@@ -5,7 +5,8 @@
 //! src/frame/gbuffer.rs. The light pre-pass fills a thin G-buffer (normal,
 //! shininess and depth only): the fragment shader's other outputs are dropped.
 //!
-//! GL state: sets glDepthFunc(render.depth_func), depth writes, back-face
+//! GL state: sets glDepthFunc(render.depth_func, or the material's
+//! depth_func per object where it differs), depth writes, back-face
 //! culling, glFrontFace per object, GL_FRAMEBUFFER_SRGB (albedo and specular
 //! are encoded as they are stored); restores all of them.
 
@@ -100,7 +101,15 @@ impl RunPasses for GBufferPass {
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in &f.draws.items {
+            let mut depth_func = f.scene.render.depth_func;
+            // Transparent objects are drawn later, sorted (blending/transparency.rs).
+            for d in f.draws.items.iter().filter(|d| !d.transparent) {
+                // A material may test depth its own way (notes 05, "Depth Test and Operation").
+                let func = d.depth_func.unwrap_or(f.scene.render.depth_func);
+                if func != depth_func {
+                    gl.depth_func(func.gl());
+                    depth_func = func;
+                }
                 // A mirroring model matrix turns counter-clockwise triangles clockwise.
                 gl.front_face(d.front_face());
                 gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));

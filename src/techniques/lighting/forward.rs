@@ -11,7 +11,8 @@
 //! lit in a geometry shader), Gouraud (lit per vertex) and Phong (lit per
 //! fragment). This is the reference every deferred path is compared against.
 //!
-//! GL state: sets glDepthFunc(render.depth_func), depth writes, back-face
+//! GL state: sets glDepthFunc(render.depth_func, or the material's
+//! depth_func per object where it differs), depth writes, back-face
 //! culling, glFrontFace per object; restores GL_LESS, no depth test, no
 //! culling, GL_CCW.
 
@@ -134,7 +135,15 @@ impl RunPasses for Forward {
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in &f.draws.items {
+            let mut depth_func = settings.depth_func;
+            // Transparent objects are drawn later, sorted (blending/transparency.rs).
+            for d in f.draws.items.iter().filter(|d| !d.transparent) {
+                // A material may test depth its own way (notes 05, "Depth Test and Operation").
+                let func = d.depth_func.unwrap_or(settings.depth_func);
+                if func != depth_func {
+                    gl.depth_func(func.gl());
+                    depth_func = func;
+                }
                 // A mirroring model matrix turns counter-clockwise triangles clockwise.
                 gl.front_face(d.front_face());
                 gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));

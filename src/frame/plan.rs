@@ -11,7 +11,8 @@
 use crate::frame::lights::FrameLights;
 use crate::frame::targets::TargetDesc;
 use crate::frame::technique::Technique;
-use crate::scene::{RenderPath, Scene};
+use crate::math::depth::{DEPTH_BITS, precision_table};
+use crate::scene::{Projection, RenderPath, Scene};
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pass {
@@ -57,6 +58,31 @@ pub struct FramePlan {
     pub path: RenderPath,
     pub targets: Vec<TargetDesc>,
     pub passes: Vec<Pass>,
+    /// The camera's depth precision (notes 01 §4.4): the smallest eye-space
+    /// depth difference the 24-bit depth buffer resolves, (z, dz) at a few
+    /// distances (src/math/depth.rs).
+    pub depth_precision: DepthPrecision,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DepthPrecision {
+    pub near: f32,
+    pub far: f32,
+    pub perspective: bool,
+    pub table: Vec<(f64, f64)>,
+}
+
+impl DepthPrecision {
+    pub fn new(scene: &Scene) -> DepthPrecision {
+        let c = &scene.camera;
+        let perspective = matches!(c.projection, Projection::Perspective { .. });
+        DepthPrecision {
+            near: c.near,
+            far: c.far,
+            perspective,
+            table: precision_table(c.near.into(), c.far.into(), perspective, DEPTH_BITS),
+        }
+    }
 }
 
 impl FramePlan {
@@ -86,6 +112,7 @@ impl FramePlan {
             path: scene.render.path,
             targets,
             passes,
+            depth_precision: DepthPrecision::new(scene),
         }
     }
 
@@ -116,6 +143,22 @@ impl std::fmt::Display for FramePlan {
                 p.draws,
                 p.code
             )?;
+        }
+        let d = &self.depth_precision;
+        writeln!(
+            f,
+            "depth precision ({DEPTH_BITS}-bit, {}, near {}, far {}): smallest resolvable depth difference",
+            if d.perspective {
+                "perspective: dz = z^2 (f - n) / (f n 2^24)"
+            } else {
+                "orthographic: dz = (f - n) / 2^24"
+            },
+            d.near,
+            d.far
+        )?;
+        for (z, dz) in &d.table {
+            let z = format!("{}", *z as f32);
+            writeln!(f, "  at z = {z:<10} dz = {dz:.3e}")?;
         }
         Ok(())
     }

@@ -67,9 +67,42 @@ pub fn distinct_in_buffer(z1: f64, z2: f64, n: f64, f: f64, bits: u32) -> bool {
 /// The depth buffer gloss allocates: DEPTH24_STENCIL8.
 pub const DEPTH_BITS: u32 = 24;
 
+/// (z, dz) at a few eye distances between `n` and `f` (10 n, 1, 10, 100,
+/// f / 2 and f, those inside the range), for `gloss plan`. An orthographic
+/// projection stores depth linearly: dz = (f - n) / 2^bits at every z.
+pub fn precision_table(n: f64, f: f64, perspective: bool, bits: u32) -> Vec<(f64, f64)> {
+    let mut zs: Vec<f64> = [10.0 * n, 1.0, 10.0, 100.0, f / 2.0, f]
+        .into_iter()
+        .filter(|&z| z > n && z <= f)
+        .collect();
+    zs.sort_by(f64::total_cmp);
+    zs.dedup_by(|a, b| (*a - *b).abs() <= 1e-6 * b.abs());
+    zs.into_iter()
+        .map(|z| {
+            let dz = if perspective {
+                resolvable_difference(z, n, f, bits)
+            } else {
+                (f - n) / 2f64.powi(bits as i32)
+            };
+            (z, dz)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_table_lists_distances_inside_the_range_growing_with_z_squared() {
+        let t = precision_table(0.01, 100.0, true, 24);
+        let zs: Vec<f64> = t.iter().map(|r| r.0).collect();
+        assert_eq!(zs, [0.1, 1.0, 10.0, 50.0, 100.0]);
+        // dz(10 z) = 100 dz(z).
+        assert!((t[2].1 / t[1].1 - 100.0).abs() < 1e-9);
+        let ortho = precision_table(1.0, 20.0, false, 24);
+        assert!(ortho.iter().all(|r| r.1 == 19.0 / 16777216.0));
+    }
 
     #[test]
     fn window_depth_maps_near_to_0_and_far_to_1_and_inverts() {

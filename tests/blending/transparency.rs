@@ -324,3 +324,42 @@ fn the_pass_restores_the_gl_state_in_every_path() {
         assert!(changed.is_empty(), "{path:?}:\n  {}", changed.join("\n  "));
     }
 }
+
+#[test]
+fn a_material_made_transparent_live_renders_as_if_loaded_so() {
+    // The demo's panel edits opacity; the renderer takes it through
+    // set_scene_values: the plan gains the pass, the draw list the flag, and
+    // the image equals a renderer built from the edited scene.
+    let ctx = common::context(common::backend());
+    let mut scene = with_path(&common::scene("default.toml"), RenderPath::Deferred);
+    scene.render.size = (160, 90);
+    let new = |s: &Scene| {
+        Renderer::new(
+            &ctx.gl,
+            &ctx.debug,
+            s,
+            &gloss::gl::program::Sources::Embedded,
+            160,
+            90,
+        )
+        .unwrap()
+    };
+    let mut live = new(&scene);
+    live.render(&scene.camera).unwrap();
+    let before = live.read_image();
+    assert!(!live.plan.has_pass("transparency"));
+    let red = scene
+        .materials
+        .iter()
+        .position(|m| m.name == "red")
+        .unwrap();
+    scene.materials[red].opacity = 0.4;
+    live.set_scene_values(&scene).unwrap();
+    assert!(live.plan.has_pass("transparency"), "{}", live.plan);
+    live.render(&scene.camera).unwrap();
+    let edited = live.read_image();
+    let mut fresh = new(&scene);
+    fresh.render(&scene.camera).unwrap();
+    assert!(edited.as_raw() == fresh.read_image().as_raw());
+    assert!(edited.as_raw() != before.as_raw());
+}

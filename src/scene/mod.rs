@@ -317,6 +317,14 @@ impl Scene {
         Ok(())
     }
 
+    /// How many objects the opaque passes draw (their material's opacity is 1).
+    pub fn opaque_objects(&self) -> usize {
+        self.objects
+            .iter()
+            .filter(|o| !self.materials[o.material].is_transparent())
+            .count()
+    }
+
     pub fn aspect(&self) -> f32 {
         self.render.size.0 as f32 / self.render.size.1 as f32
     }

@@ -277,6 +277,8 @@ fn the_pass_is_planned_only_for_transparent_materials_and_runs_last() {
                 .contains("5 transparent objects"),
             "{p}"
         );
+        // The opaque passes count only the objects they draw.
+        assert!(p.passes[0].draws.starts_with("3 objects"), "{p}");
         let opaque = plan(&with_path(&common::scene("default.toml"), path));
         assert!(!opaque.has_pass("transparency"), "{opaque}");
     }

@@ -58,17 +58,8 @@ pub const TRANSPARENCY: Technique = Technique {
     create,
 };
 
-/// How many of the scene's objects are transparent.
-fn transparent_count(scene: &Scene) -> usize {
-    scene
-        .objects
-        .iter()
-        .filter(|o| scene.materials[o.material].is_transparent())
-        .count()
-}
-
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
-    let n = transparent_count(scene);
+    let n = scene.objects.len() - scene.opaque_objects();
     if n == 0 {
         return vec![];
     }

@@ -69,7 +69,7 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     }
     let draws = format!(
         "{} objects again, GL_LEQUAL against the G-buffer's depth (blitted): material x light, sRGB encode",
-        scene.objects.len()
+        scene.opaque_objects()
     );
     v.push(Pass::new("combine", OUTPUT, draws, file!()).step(COMBINE));
     v

@@ -45,7 +45,7 @@ fn layout(scene: &Scene) -> Option<bool> {
 }
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
-    let n = scene.objects.len();
+    let n = scene.opaque_objects();
     match layout(scene) {
         None => vec![],
         Some(false) => vec![Pass::new(

@@ -64,7 +64,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     };
     let draws = format!(
         "{} objects x {} lights ({mode})",
-        scene.objects.len(),
+        scene.opaque_objects(),
         scene.lights.len()
     );
     vec![Pass::new("forward", OUTPUT, draws, file!())]

@@ -2,7 +2,8 @@
 //! matrices and material, with the meshes and textures they share uploaded
 //! once. A geometry pass (forward, G-buffer, combine) loops over `items`,
 //! making its own GL state changes per object (glFrontFace, the diffuse
-//! texture) in its own file; this module only sets uniforms.
+//! texture) in its own file; this module only sets uniforms. The opaque
+//! passes skip the `transparent` items; the transparency pass draws them.
 
 use crate::frame::billboards::BillboardDraws;
 use crate::geometry::{self, MeshData};
@@ -11,7 +12,7 @@ use crate::gl::mesh::Mesh;
 use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture};
 use crate::math;
-use crate::scene::{MeshSource, Scene};
+use crate::scene::{DepthFunc, MeshSource, Scene};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
 use std::collections::HashMap;
@@ -39,6 +40,15 @@ pub struct DrawItem {
     /// The material's alpha test (notes 05): `AlphaTest::code` and the reference.
     pub alpha_test: i32,
     pub alpha_ref: f32,
+    /// The material's opacity (alpha, notes 01 §4.5).
+    pub opacity: f32,
+    /// Opacity < 1: the opaque passes skip it, the transparency pass draws it.
+    pub transparent: bool,
+    /// The material's own depth test (None: `render.depth_func`).
+    pub depth_func: Option<DepthFunc>,
+    /// The centre of the mesh's bounding box, in its own space (the
+    /// transparency pass sorts by the view depth of `model * centre`).
+    pub centre: Vec3,
 }
 
 impl DrawItem {
@@ -64,11 +74,14 @@ impl DrawList {
         let mut textures = Vec::new();
         let mut texture_index: HashMap<PathBuf, usize> = HashMap::new();
         let mut items = Vec::new();
+        let mut centres = Vec::new();
         for o in &scene.objects {
             let mesh = match mesh_index.get(&o.mesh) {
                 Some(&i) => i,
                 None => {
-                    meshes.push(Mesh::upload(gl, &mesh_data(&o.mesh)?)?);
+                    let data = mesh_data(&o.mesh)?;
+                    centres.push(bounds_centre(&data));
+                    meshes.push(Mesh::upload(gl, &data)?);
                     mesh_index.insert(o.mesh.clone(), meshes.len() - 1);
                     meshes.len() - 1
                 }
@@ -106,6 +119,10 @@ impl DrawList {
                 roughness,
                 alpha_test: m.alpha_test.code(),
                 alpha_ref: m.alpha_ref,
+                opacity: m.opacity,
+                transparent: m.is_transparent(),
+                depth_func: m.depth_func,
+                centre: centres[mesh],
             });
         }
         Ok(DrawList {
@@ -130,6 +147,9 @@ impl DrawList {
             d.shininess = m.shininess;
             d.alpha_test = m.alpha_test.code();
             d.alpha_ref = m.alpha_ref;
+            d.opacity = m.opacity;
+            d.transparent = m.is_transparent();
+            d.depth_func = m.depth_func;
         }
     }
 
@@ -169,6 +189,22 @@ pub fn normal_matrix(model: &Mat4) -> Mat3 {
             // cofactor(M) has columns c1 x c2, c2 x c0, c0 x c1.
             Mat3::from_cols(c1.cross(c2), c2.cross(c0), c0.cross(c1))
         }
+    }
+}
+
+/// The centre of the axis-aligned box around the mesh's vertices.
+fn bounds_centre(data: &MeshData) -> Vec3 {
+    let mut lo = Vec3::splat(f32::INFINITY);
+    let mut hi = Vec3::splat(f32::NEG_INFINITY);
+    for v in &data.vertices {
+        let p = Vec3::from(v.position);
+        lo = lo.min(p);
+        hi = hi.max(p);
+    }
+    if lo.cmple(hi).all() {
+        (lo + hi) * 0.5
+    } else {
+        Vec3::ZERO
     }
 }
 

@@ -12,7 +12,8 @@ use crate::frame::lights::FrameLights;
 use crate::frame::targets::TargetDesc;
 use crate::frame::technique::{FrameOrder, Stage, Technique};
 use crate::frame::views::View;
-use crate::scene::{RenderPath, Scene};
+use crate::math::depth::{DEPTH_BITS, precision_table};
+use crate::scene::{Projection, RenderPath, Scene};
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pass {
@@ -83,6 +84,31 @@ pub struct FramePlan {
     pub passes: Vec<Pass>,
     /// The views the world is drawn for: the camera's first.
     pub views: Vec<View>,
+    /// The camera's depth precision (notes 01 §4.4): the smallest eye-space
+    /// depth difference the 24-bit depth buffer resolves, (z, dz) at a few
+    /// distances (src/math/depth.rs).
+    pub depth_precision: DepthPrecision,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DepthPrecision {
+    pub near: f32,
+    pub far: f32,
+    pub perspective: bool,
+    pub table: Vec<(f64, f64)>,
+}
+
+impl DepthPrecision {
+    pub fn new(scene: &Scene) -> DepthPrecision {
+        let c = &scene.camera;
+        let perspective = matches!(c.projection, Projection::Perspective { .. });
+        DepthPrecision {
+            near: c.near,
+            far: c.far,
+            perspective,
+            table: precision_table(c.near.into(), c.far.into(), perspective, DEPTH_BITS),
+        }
+    }
 }
 
 impl FramePlan {
@@ -149,6 +175,7 @@ impl FramePlan {
             targets,
             passes,
             views: order.views,
+            depth_precision: DepthPrecision::new(scene),
         }
     }
 
@@ -191,6 +218,22 @@ impl std::fmt::Display for FramePlan {
                 p.draws,
                 p.code
             )?;
+        }
+        let d = &self.depth_precision;
+        writeln!(
+            f,
+            "depth precision ({DEPTH_BITS}-bit, {}, near {}, far {}): smallest resolvable depth difference",
+            if d.perspective {
+                "perspective: dz = z^2 (f - n) / (f n 2^24)"
+            } else {
+                "orthographic: dz = (f - n) / 2^24"
+            },
+            d.near,
+            d.far
+        )?;
+        for (z, dz) in &d.table {
+            let z = format!("{}", *z as f32);
+            writeln!(f, "  at z = {z:<10} dz = {dz:.3e}")?;
         }
         Ok(())
     }

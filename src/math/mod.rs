@@ -31,6 +31,8 @@ pub mod reflection;
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
+pub mod depth;
+
 /// Builds a matrix from its four rows, written as they appear on paper.
 /// glam stores columns, so this is `from_cols_array_2d(rows).transpose()`.
 pub fn from_rows(rows: [[f32; 4]; 4]) -> Mat4 {

@@ -86,6 +86,7 @@ pub(super) struct RenderFile {
     pub(super) mirror_winding: bool,
     pub(super) billboards: BillboardMode,
     pub(super) billboard_alpha_ref: f32,
+    pub(super) sort_transparent: bool,
 }
 
 impl Default for RenderFile {
@@ -106,6 +107,7 @@ impl Default for RenderFile {
             mirror_winding: true,
             billboards: BillboardMode::AlphaTest,
             billboard_alpha_ref: 0.5,
+            sort_transparent: true,
         }
     }
 }
@@ -184,6 +186,11 @@ pub(super) struct MaterialFile {
     pub(super) alpha_test: AlphaTest,
     #[serde(default = "half")]
     pub(super) alpha_ref: f32,
+    /// 1 = opaque; below 1 the object is transparent (notes 01 §4.5, §6.1).
+    #[serde(default = "one")]
+    pub(super) opacity: f32,
+    /// Overrides `render.depth_func` for this material's objects.
+    pub(super) depth_func: Option<DepthFunc>,
 }
 
 fn always() -> AlphaTest {

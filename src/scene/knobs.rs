@@ -260,6 +260,19 @@ pub static BILLBOARD_ALPHA_REF: Knob = Knob {
     },
 };
 
+pub static SORT_TRANSPARENT: Knob = Knob {
+    key: "render.sort_transparent",
+    label: "sort transparent",
+    help: "draw transparent objects back to front (notes 01 §6.1); off shows the wrong blend order",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.sort_transparent),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.sort_transparent = b;
+        }
+    },
+};
+
 /// Every knob, in the order the panel shows the frame-wide ones.
 pub static ALL: &[&Knob] = &[
     &PATH,
@@ -276,6 +289,7 @@ pub static ALL: &[&Knob] = &[
     &MIRROR_WINDING,
     &BILLBOARDS,
     &BILLBOARD_ALPHA_REF,
+    &SORT_TRANSPARENT,
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

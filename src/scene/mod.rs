@@ -98,6 +98,9 @@ pub struct RenderSettings {
     pub billboards: BillboardMode,
     /// The billboards' alpha test passes alpha >= this (notes 05: 0.5).
     pub billboard_alpha_ref: f32,
+    /// Draw transparent objects back to front (notes 01 §6.1); false shows
+    /// what goes wrong unsorted.
+    pub sort_transparent: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -144,6 +147,17 @@ pub struct Material {
     /// Alpha test on the diffuse texture's alpha: op and reference (notes 05).
     pub alpha_test: AlphaTest,
     pub alpha_ref: f32,
+    /// Alpha (notes 01 §4.5): 1 = opaque; below 1 the transparency pass draws it.
+    pub opacity: f32,
+    /// The depth test for this material's objects (None: `render.depth_func`).
+    pub depth_func: Option<DepthFunc>,
+}
+
+impl Material {
+    /// Drawn by the transparency pass, not by the opaque passes.
+    pub fn is_transparent(&self) -> bool {
+        self.opacity < 1.0
+    }
 }
 
 /// Where a mesh comes from.
@@ -338,6 +352,14 @@ impl Scene {
         self.lights.extend(generate_lights(&grid));
         self.grid_lights = Some(count);
         Ok(())
+    }
+
+    /// How many objects the opaque passes draw (their material's opacity is 1).
+    pub fn opaque_objects(&self) -> usize {
+        self.objects
+            .iter()
+            .filter(|o| !self.materials[o.material].is_transparent())
+            .count()
     }
 
     pub fn aspect(&self) -> f32 {

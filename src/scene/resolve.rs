@@ -192,6 +192,7 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             }
             a
         },
+        sort_transparent: r.sort_transparent,
     })
 }
 
@@ -208,6 +209,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         shininess: 32.0,
         alpha_test: AlphaTest::Always,
         alpha_ref: 0.5,
+        opacity: 1.0,
+        depth_func: None,
     }];
     let mut material_index = HashMap::new();
     for n in names {
@@ -227,6 +230,13 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
                 "{}: expected a number in 0..=1, found {}",
                 key("alpha_ref"),
                 m.alpha_ref
+            );
+        }
+        if !(m.opacity.is_finite() && (0.0..=1.0).contains(&m.opacity)) {
+            bail!(
+                "{}: expected a number in [0, 1] (1 = opaque), found {}",
+                key("opacity"),
+                m.opacity
             );
         }
         let diffuse_texture = match &m.diffuse_texture {
@@ -252,6 +262,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             shininess: m.shininess,
             alpha_test: m.alpha_test,
             alpha_ref: m.alpha_ref,
+            opacity: m.opacity,
+            depth_func: m.depth_func,
         });
     }
     Ok((materials, material_index))

@@ -1,6 +1,6 @@
 //! "Save as": the scene file as loaded, with the panel's edits written into
 //! it (every render knob, the light grid's count, the listed lights, the
-//! materials' colours and shininess, the objects' transforms, the camera),
+//! materials' colours, shininess, opacity and depth test, the objects' transforms, the camera),
 //! so that the saved file
 //! loads to the same scene. Paths to meshes and textures are rewritten to
 //! stay valid from the new file's folder: absolute for files on disk,
@@ -58,6 +58,11 @@ impl Scene {
                     t.insert("diffuse".into(), vec3(m.diffuse));
                     t.insert("specular".into(), vec3(m.specular));
                     t.insert("shininess".into(), toml::Value::Float(m.shininess.into()));
+                    t.insert("opacity".into(), toml::Value::Float(m.opacity.into()));
+                    match m.depth_func {
+                        Some(f) => t.insert("depth_func".into(), f.name().into()),
+                        None => t.remove("depth_func"),
+                    };
                 }
             }
         }

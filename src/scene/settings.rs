@@ -85,11 +85,20 @@ setting! {
 }
 
 setting! {
-    /// The depth test: notes 02 says a fragment fails when d >= D (GL_LESS),
-    /// notes 01 that it passes when z <= D (GL_LEQUAL). Both are offered.
+    /// The depth test (notes 01 §4.4; notes 05, "Depth Test and Operation":
+    /// "Always, Never, <, <=, =, !=, >, >="): a fragment passes when its depth
+    /// d compares so with the stored D. Notes 02 says a fragment fails when
+    /// d >= D (GL_LESS), notes 01 that it passes when z <= D (GL_LEQUAL).
+    /// Every choice is offered, in GL's order.
     pub enum DepthFunc {
+        Never = "never",
         Less = "less",
+        Equal = "equal",
         Lequal = "lequal",
+        Greater = "greater",
+        Notequal = "notequal",
+        Gequal = "gequal",
+        Always = "always",
     }
 }
 
@@ -97,8 +106,29 @@ impl DepthFunc {
     /// The glDepthFunc argument.
     pub fn gl(self) -> u32 {
         match self {
+            DepthFunc::Never => glow::NEVER,
             DepthFunc::Less => glow::LESS,
+            DepthFunc::Equal => glow::EQUAL,
             DepthFunc::Lequal => glow::LEQUAL,
+            DepthFunc::Greater => glow::GREATER,
+            DepthFunc::Notequal => glow::NOTEQUAL,
+            DepthFunc::Gequal => glow::GEQUAL,
+            DepthFunc::Always => glow::ALWAYS,
+        }
+    }
+
+    /// Whether a fragment of depth `d` passes against the stored depth `stored`
+    /// (the CPU twin of the test, for the tests).
+    pub fn passes(self, d: f64, stored: f64) -> bool {
+        match self {
+            DepthFunc::Never => false,
+            DepthFunc::Less => d < stored,
+            DepthFunc::Equal => d == stored,
+            DepthFunc::Lequal => d <= stored,
+            DepthFunc::Greater => d > stored,
+            DepthFunc::Notequal => d != stored,
+            DepthFunc::Gequal => d >= stored,
+            DepthFunc::Always => true,
         }
     }
 }

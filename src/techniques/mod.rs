@@ -10,6 +10,7 @@
 //! (tests/architecture.rs checks it).
 
 pub mod billboards;
+pub mod blending;
 pub mod deferred;
 pub mod lighting;
 pub mod stencil;
@@ -30,6 +31,7 @@ pub static ALL: &[&Technique] = &[
     &deferred::composite::COMPOSITE,
     &stencil::mirror::MIRROR,
     &billboards::billboards::BILLBOARDS,
+    &blending::transparency::TRANSPARENCY,
 ];
 
 /// The frame plan of `scene`: the registered techniques' passes and targets.

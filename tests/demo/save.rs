@@ -85,3 +85,31 @@ fn a_saved_scene_loads_to_the_same_image() {
         );
     }
 }
+
+#[test]
+fn save_as_keeps_opacity_depth_functions_and_the_sort_knob() {
+    let dir = std::env::temp_dir().join("gloss-save-as-glass");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut scene = Scene::load(&common::root().join("scenes/transparency.toml")).unwrap();
+    (knobs::SORT_TRANSPARENT.set)(&mut scene.render, Value::Bool(false));
+    scene.render.depth_func = gloss::scene::DepthFunc::Lequal;
+    let glass = scene
+        .materials
+        .iter()
+        .position(|m| m.opacity < 1.0)
+        .unwrap();
+    scene.materials[glass].opacity = 0.3;
+    scene.materials[glass].depth_func = Some(gloss::scene::DepthFunc::Always);
+    scene.materials[1].opacity = 0.75;
+    let file = dir.join("glass.toml");
+    scene.save_as(&file).unwrap();
+    let again = Scene::load(&file).unwrap();
+    assert_eq!(again.render, scene.render);
+    assert_eq!(again.materials, scene.materials);
+    // And a material's depth test taken away again is gone from the file.
+    let mut back = again.clone();
+    back.materials[glass].depth_func = None;
+    back.save_as(&file).unwrap();
+    assert_eq!(Scene::load(&file).unwrap().materials, back.materials);
+}

@@ -300,3 +300,39 @@ fn scene_unknown_parent() {
         &["objects[0].parent", "no object named \"table\""],
     );
 }
+
+#[test]
+fn material_opacity_out_of_range() {
+    for (bad, test) in [
+        ("nan", "material_opacity_nan"),
+        ("-0.25", "material_opacity_negative"),
+        ("1.5", "material_opacity_above_one"),
+    ] {
+        let text = base_with(
+            "shininess = 24.0",
+            &format!("shininess = 24.0\nopacity = {bad}"),
+        );
+        scene_fails(
+            test,
+            &text,
+            &["materials.floor.opacity", "expected a number in [0, 1]"],
+        );
+    }
+}
+
+#[test]
+fn material_depth_func_unknown_word() {
+    let text = base_with(
+        "shininess = 24.0",
+        "shininess = 24.0\ndepth_func = \"lesser\"",
+    );
+    scene_fails(
+        "material_depth_func_unknown_word",
+        &text,
+        &[
+            "depth_func",
+            "never, less, equal, lequal, greater, notequal, gequal or always",
+            "lesser",
+        ],
+    );
+}

@@ -1,6 +1,6 @@
 //! The scene's lights and materials, editable live: each light's colour,
 //! intensity, position, direction, Kc/Kl/Kq attenuation and cone angles;
-//! each material's diffuse and specular colours and shininess. Lights made
+//! each material's diffuse and specular colours, shininess and opacity. Lights made
 //! by a `[light_grid]` change through its count instead.
 
 use crate::scene::{Camera, LightKind, Object, Projection, Scene};
@@ -96,6 +96,8 @@ pub fn materials(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::M
                         changed |= vec3(ui, "diffuse", &mut m.diffuse, 0.0..=10.0);
                         changed |= vec3(ui, "specular", &mut m.specular, 0.0..=10.0);
                         changed |= number(ui, "shininess", &mut m.shininess, 1.0..=4096.0);
+                        // Below 1 the transparency pass draws it (notes 01 §4.5).
+                        changed |= number(ui, "opacity", &mut m.opacity, 0.0..=1.0);
                     });
             }
         });

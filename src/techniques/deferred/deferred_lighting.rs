@@ -70,7 +70,7 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     }
     let draws = format!(
         "{} objects again, GL_LEQUAL against the G-buffer's depth (blitted): material x light, sRGB encode",
-        scene.objects.len()
+        scene.opaque_objects()
     );
     v.push(Pass::new("combine", OUTPUT, draws, file!()).step(COMBINE));
     v
@@ -193,7 +193,9 @@ impl DeferredLighting {
             gl.active_texture(glow::TEXTURE0 + unit::SPECULAR_LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[1].id));
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in f.draws.items.iter().filter(|d| !d.mirror) {
+            // Transparent objects are drawn later, sorted (blending/transparency.rs);
+            // mirrors by the mirror technique (stencil/mirror.rs).
+            for d in (f.draws.items.iter()).filter(|d| !d.transparent && !d.mirror) {
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));

@@ -5,7 +5,8 @@
 //! src/frame/gbuffer.rs. The light pre-pass fills a thin G-buffer (normal,
 //! shininess and depth only): the fragment shader's other outputs are dropped.
 //!
-//! GL state: sets glDepthFunc(render.depth_func), depth writes, back-face
+//! GL state: sets glDepthFunc(render.depth_func, or the material's
+//! depth_func per object where it differs), depth writes, back-face
 //! culling, glFrontFace per object, GL_FRAMEBUFFER_SRGB (albedo and specular
 //! are encoded as they are stored); restores all of them.
 
@@ -45,7 +46,7 @@ fn layout(scene: &Scene) -> Option<bool> {
 }
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
-    let n = scene.objects.len();
+    let n = scene.opaque_objects();
     match layout(scene) {
         None => vec![],
         Some(false) => vec![Pass::new(
@@ -106,7 +107,16 @@ impl RunPasses for GBufferPass {
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_vec4("u_clip_plane", f.view.clip_uniform());
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in f.draws.items.iter().filter(|d| !d.mirror) {
+            let mut depth_func = f.scene.render.depth_func;
+            // Transparent objects are drawn later, sorted (blending/transparency.rs);
+            // mirrors by the mirror technique (stencil/mirror.rs).
+            for d in (f.draws.items.iter()).filter(|d| !d.transparent && !d.mirror) {
+                // A material may test depth its own way (notes 05, "Depth Test and Operation").
+                let func = d.depth_func.unwrap_or(f.scene.render.depth_func);
+                if func != depth_func {
+                    gl.depth_func(func.gl());
+                    depth_func = func;
+                }
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));

@@ -15,7 +15,8 @@
 //! the world reflected: without clearing, inside the mirror's stencil
 //! region, with a clip plane and the winding flipped (src/frame/views.rs).
 //!
-//! GL state: sets glDepthFunc(render.depth_func), depth writes, back-face
+//! GL state: sets glDepthFunc(render.depth_func, or the material's
+//! depth_func per object where it differs), depth writes, back-face
 //! culling, glFrontFace per object, and for a reflected view the stencil
 //! test and GL_CLIP_DISTANCE0; restores GL_LESS, no depth test, no culling,
 //! GL_CCW, no stencil test, no clip distance.
@@ -69,7 +70,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     };
     let draws = format!(
         "{} objects x {} lights ({mode})",
-        scene.objects.len(),
+        scene.opaque_objects(),
         scene.lights.len()
     );
     vec![Pass::new("forward", OUTPUT, draws, file!())]
@@ -154,7 +155,16 @@ impl RunPasses for Forward {
             p.set_vec4("u_clip_plane", f.view.clip_uniform());
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            for d in f.draws.items.iter().filter(|d| !d.mirror) {
+            let mut depth_func = settings.depth_func;
+            // Transparent objects are drawn later, sorted (blending/transparency.rs);
+            // mirrors by the mirror technique (stencil/mirror.rs).
+            for d in (f.draws.items.iter()).filter(|d| !d.transparent && !d.mirror) {
+                // A material may test depth its own way (notes 05, "Depth Test and Operation").
+                let func = d.depth_func.unwrap_or(settings.depth_func);
+                if func != depth_func {
+                    gl.depth_func(func.gl());
+                    depth_func = func;
+                }
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));

@@ -1,0 +1,33 @@
+#version 330 core
+// A transparent object (notes 01 §4.5): lit like a forward fragment (the same
+// Phong code, glsl/common/lighting.glsl), written with alpha = the material's
+// opacity; glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) mixes it with
+// what lies behind: C = C_source * alpha + C_dest * (1 - alpha).
+#include "common/lighting.glsl"
+#include "common/normals.glsl"
+#include "common/material.glsl"
+#include "common/lighting_output.glsl"
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+
+uniform int u_light_count;
+uniform vec3 u_eye;
+uniform vec3 u_ambient;
+uniform float u_opacity;
+
+out vec4 frag_color;
+
+void main() {
+    vec3 N = safe_normal(v_normal, v_position);
+    // A back face (the far wall of a glass sphere) faces the eye from inside.
+    if (!gl_FrontFacing) N = -N;
+    vec3 V = normalize(u_eye - v_position);
+    vec3 kd = material_diffuse(v_uv);
+    vec3 c = u_ambient * kd;
+    for (int i = 0; i < u_light_count; ++i) {
+        c += phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+    }
+    frag_color = vec4(output_color(c).rgb, u_opacity);
+}

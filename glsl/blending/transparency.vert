@@ -1,0 +1,26 @@
+#version 330 core
+// Transparent objects (notes 01 §4.5): world-space data for the Phong shader,
+// exactly as the forward pass's vertex shader passes it on.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+
+uniform mat4 u_model;
+uniform mat4 u_view_projection;
+uniform mat3 u_normal_matrix;
+// A mirror's reflected view keeps what lies in front of the mirror (notes 05);
+// ignored unless GL_CLIP_DISTANCE0 is on.
+uniform vec4 u_clip_plane;
+
+out vec3 v_position;
+out vec3 v_normal;
+out vec2 v_uv;
+
+void main() {
+    vec4 world = u_model * vec4(a_position, 1.0);
+    v_position = world.xyz;
+    v_normal = u_normal_matrix * a_normal;
+    v_uv = a_uv;
+    gl_Position = u_view_projection * world;
+    gl_ClipDistance[0] = dot(u_clip_plane, world);
+}

@@ -10,9 +10,9 @@ layout(location = 3) in float a_cylindrical;
 uniform mat4 u_view;
 uniform mat4 u_view_projection;
 uniform float u_sprite_count;
-// A mirror's reflected view keeps what lies in front of the mirror (notes 05);
-// ignored unless GL_CLIP_DISTANCE0 is on.
-uniform vec4 u_clip_plane;
+// The view drawn for: a mirror's clip plane, or a curved mirror's
+// reflection of each vertex (common/view.glsl).
+#include "common/view.glsl"
 
 out vec2 v_uv;
 
@@ -34,6 +34,6 @@ void main() {
     }
     vec3 world = a_center + right * (corner.x * a_size.x) + up * (corner.y * a_size.y);
     v_uv = vec2((a_sprite + corner.x + 0.5) / u_sprite_count, corner.y + 0.5);
-    gl_Position = u_view_projection * vec4(world, 1.0);
-    gl_ClipDistance[0] = dot(u_clip_plane, vec4(world, 1.0));
+    gl_Position = u_view_projection * view_position(vec4(world, 1.0));
+    gl_ClipDistance[0] = clip_distance(vec4(world, 1.0));
 }

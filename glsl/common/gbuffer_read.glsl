@@ -7,6 +7,9 @@ uniform sampler2D u_gbuffer_albedo;     // diffuse albedo (linear)
 uniform sampler2D u_gbuffer_specular;   // specular colour (linear)
 uniform sampler2D u_gbuffer_depth;      // depth: the position is rebuilt from it
 uniform mat4 u_inverse_view_projection;
+// The view's rectangle in the target (x, y, width, height in pixels): the
+// whole target, or a split view's quarter (src/frame/views.rs).
+uniform vec4 u_viewport;
 
 struct Surface {
     vec3 P;
@@ -21,10 +24,14 @@ vec2 gbuffer_uv() {
     return gl_FragCoord.xy / textureSize(u_gbuffer_normal, 0).xy;
 }
 
-// World position from window uv and depth: NDC = (uv, depth) * 2 - 1, then
-// the inverse view-projection and the perspective divide undone.
+// World position from this fragment's window position and depth: NDC =
+// (position within the viewport, depth) * 2 - 1, then the inverse
+// view-projection and the perspective divide undone. (`uv` is the G-buffer
+// texture coordinate, unused here: with a split view the viewport is only
+// part of the texture.)
 vec3 world_position(vec2 uv, float depth) {
-    vec4 ndc = vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0);
+    vec2 in_viewport = (gl_FragCoord.xy - u_viewport.xy) / u_viewport.zw;
+    vec4 ndc = vec4(vec3(in_viewport, depth) * 2.0 - 1.0, 1.0);
     vec4 world = u_inverse_view_projection * ndc;
     return world.xyz / world.w;
 }

@@ -7,9 +7,9 @@ layout(location = 2) in vec2 a_uv;
 uniform mat4 u_model;
 uniform mat4 u_view_projection;
 uniform mat3 u_normal_matrix;
-// A reflected view keeps what lies in front of its mirror (notes 05); ignored
-// unless GL_CLIP_DISTANCE0 is on.
-uniform vec4 u_clip_plane;
+// The view drawn for: a mirror's clip plane, or a curved mirror's
+// reflection of each vertex (common/view.glsl).
+#include "common/view.glsl"
 
 out vec3 v_position;
 out vec3 v_normal;
@@ -23,6 +23,6 @@ void main() {
     v_position = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
-    gl_Position = u_view_projection * world;
-    gl_ClipDistance[0] = dot(u_clip_plane, world);
+    gl_Position = u_view_projection * view_position(world);
+    gl_ClipDistance[0] = clip_distance(world);
 }

@@ -12,9 +12,9 @@ uniform mat4 u_view_projection;
 uniform int u_light_count;
 uniform vec3 u_eye;
 uniform vec3 u_ambient;
-// A reflected view keeps what lies in front of its mirror (notes 05); with a
-// geometry shader, it writes the clip distance.
-uniform vec4 u_clip_plane;
+// The view drawn for: a mirror's clip plane, or a curved mirror's
+// reflection of each vertex (common/view.glsl).
+#include "common/view.glsl"
 uniform float u_mirror;   // -1 when the model matrix flips handedness
 flat out vec3 f_color;
 
@@ -33,8 +33,8 @@ void main() {
     }
     for (int k = 0; k < 3; ++k) {
         f_color = c;
-        gl_Position = u_view_projection * vec4(g_position[k], 1.0);
-        gl_ClipDistance[0] = dot(u_clip_plane, vec4(g_position[k], 1.0));
+        gl_Position = u_view_projection * view_position(vec4(g_position[k], 1.0));
+        gl_ClipDistance[0] = clip_distance(vec4(g_position[k], 1.0));
         EmitVertex();
     }
     EndPrimitive();

@@ -6,14 +6,15 @@ layout(location = 2) in vec2 a_uv;
 
 uniform mat4 u_model;
 uniform mat4 u_view_projection;
-// A mirror seen in another mirror is cut by that mirror's plane too.
-uniform vec4 u_clip_plane;
+// The view drawn for: a mirror's clip plane, or a curved mirror's
+// reflection of each vertex (common/view.glsl).
+#include "common/view.glsl"
 
 out vec2 v_uv;
 
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
     v_uv = a_uv;
-    gl_Position = u_view_projection * world;
-    gl_ClipDistance[0] = dot(u_clip_plane, world);
+    gl_Position = u_view_projection * view_position(world);
+    gl_ClipDistance[0] = clip_distance(world);
 }

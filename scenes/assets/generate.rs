@@ -5,6 +5,8 @@
 //! * `ripples.png`: 256x256 linear greyscale ripples, 0.55 to 1, that roughen
 //!   a mirror's reflection (a lake's surface);
 //! * `knot.obj`: a (2, 3) torus knot tube, 3072 triangles, with normals and uvs;
+//! * `grid.obj`: a 2 x 2 plane in 32 x 32 squares: a floor fine enough for
+//!   a curved mirror, which moves vertices, not pixels;
 //! * `rock.obj`: a low-poly displaced icosphere, uvs but NO normals, so that
 //!   loading it exercises `geometry::compute_normals`;
 //! * `tree.png`, `grass.png`: 128x128 RGBA billboard sprites with real alpha
@@ -31,6 +33,12 @@ fn main() -> Result<()> {
         &torus_knot(2, 3, 128, 12),
         true,
         "torus knot (2, 3)",
+    )?;
+    write_obj(
+        &dir.join("grid.obj"),
+        &geometry::plane(2.0, 2.0, 32),
+        true,
+        "a 2 x 2 plane in 32 x 32 squares",
     )?;
     write_obj(
         &dir.join("rock.obj"),

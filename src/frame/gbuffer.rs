@@ -82,6 +82,7 @@ pub fn bind_for_reading(
         gl.active_texture(glow::TEXTURE0);
     }
     p.set_mat4("u_inverse_view_projection", &frame.inverse_view_projection);
+    p.set_vec4("u_viewport", glam::IVec4::from(frame.viewport).as_vec4());
     p.set_vec3("u_eye", frame.eye);
 }
 

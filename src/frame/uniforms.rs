@@ -15,6 +15,9 @@ pub struct FrameUniforms {
     pub output_srgb: bool,
     /// The background as written to the output (sRGB-encoded when the output is).
     pub clear_color: Vec3,
+    /// The view's rectangle in the targets: x, y, width, height in pixels
+    /// (the whole target but for a split view).
+    pub viewport: [i32; 4],
 }
 
 /// Texture units. A pass binds a texture with

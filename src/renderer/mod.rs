@@ -235,9 +235,14 @@ impl Renderer {
     /// The camera's uniforms, for `view`: a reflected view draws the world
     /// through `VP * R` and lights it with the eye reflected back, `R^-1 *
     /// eye` (src/frame/views.rs says why).
+    ///
+    /// A split view has its own camera (or the frame's) and the aspect of
+    /// its own rectangle.
     pub fn frame_uniforms(&self, camera: &Camera, for_view: &View) -> FrameUniforms {
+        let camera = for_view.camera.as_ref().unwrap_or(camera);
+        let (x, y, w, h) = for_view.rect(self.width, self.height);
         let view = camera.view();
-        let projection = camera.projection(self.width as f32 / self.height as f32);
+        let projection = camera.projection(w as f32 / h as f32);
         let r = for_view.reflection;
         let vp = projection * view * r;
         let srgb = self.output_kind == Output::Srgb8;
@@ -251,6 +256,7 @@ impl Renderer {
             light_count: self.scene.lights.len() as i32,
             lights_ubo: self.lights_ubo.id,
             output_srgb: srgb,
+            viewport: [x, y, w, h],
             clear_color: if srgb {
                 bg.map(lighting::srgb_encode)
             } else {

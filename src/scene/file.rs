@@ -15,6 +15,9 @@ use std::collections::HashMap;
 pub(super) struct SceneFile {
     pub(super) name: Option<String>,
     pub(super) camera: CameraFile,
+    /// Split views (src/scene/views.rs).
+    #[serde(default)]
+    pub(super) views: Vec<super::views::ViewFile>,
     #[serde(default)]
     pub(super) render: RenderFile,
     #[serde(default)]

@@ -41,6 +41,10 @@ pub(super) struct MirrorFile {
     /// or colour clear is needed.
     #[serde(default)]
     covered: bool,
+    /// A convex spherical mirror (mesh "sphere" or "icosphere", scaled
+    /// alike on every axis): each vertex is reflected on its own.
+    #[serde(default)]
+    curved: bool,
 }
 
 fn white() -> [f32; 3] {
@@ -58,6 +62,8 @@ pub struct Mirror {
     pub roughness: Option<PathBuf>,
     pub infinite: bool,
     pub covered: bool,
+    /// A convex spherical mirror (`Object::curved_mirror`).
+    pub curved: bool,
     /// The mesh's plane in object space: a point on it and the unit normal
     /// its front faces look along.
     pub local_point: Vec3,
@@ -80,7 +86,24 @@ impl Object {
             linear.z_axis.cross(linear.x_axis),
             linear.x_axis.cross(linear.y_axis),
         );
+        if m.curved {
+            return None;
+        }
         math::reflection::plane(point, cofactor * m.local_normal)
+    }
+
+    /// A curved mirror's sphere in world space, (centre, radius); None when
+    /// the object is not a curved mirror or is not scaled alike on every
+    /// axis (then it is no sphere).
+    pub fn curved_mirror(&self) -> Option<Vec4> {
+        if !self.mirror.as_ref()?.curved {
+            return None;
+        }
+        let l = Mat3::from_mat4(self.model);
+        let (a, b, c) = (l.x_axis.length(), l.y_axis.length(), l.z_axis.length());
+        let r = a.max(b).max(c);
+        let alike = r > 0.0 && (a.min(b).min(c) / r) > 1.0 - 1e-4;
+        alike.then(|| self.model.transform_point3(Vec3::ZERO).extend(r))
     }
 }
 
@@ -113,6 +136,10 @@ pub(super) fn mirror(
         bail!("{key}: a mirror is either infinite or covered, not both");
     }
     let (local_point, local_normal) = match mesh {
+        MeshSource::Sphere | MeshSource::Icosphere if file.curved => (Vec3::ZERO, Vec3::Y),
+        _ if file.curved => bail!(
+            "{key}.curved: a curved mirror is a sphere: mesh \"sphere\" or \"icosphere\", not {mesh:?}"
+        ),
         // geometry::plane: the xz plane, facing +y.
         MeshSource::Plane => (Vec3::ZERO, Vec3::Y),
         MeshSource::Obj(path) => flat(&geometry::load_obj(path)?)
@@ -127,6 +154,7 @@ pub(super) fn mirror(
         roughness,
         infinite: file.infinite,
         covered: file.covered,
+        curved: file.curved,
         local_point,
         local_normal,
     })

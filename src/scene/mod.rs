@@ -19,6 +19,7 @@ mod mirrors;
 mod resolve;
 mod save;
 mod settings;
+mod views;
 
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
 pub use billboards::{Billboard, MAX_BILLBOARDS};
@@ -28,6 +29,7 @@ pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, DepthFunc, MirrorOrder, RenderPath,
     Shading,
 };
+pub use views::SplitView;
 
 use crate::assets;
 use crate::math;
@@ -232,6 +234,9 @@ pub struct Scene {
     pub name: String,
     pub path: PathBuf,
     pub camera: Camera,
+    /// `[[views]]`: the frame split into rectangles, each its own camera
+    /// (empty: one view, the camera's).
+    pub views: Vec<SplitView>,
     pub render: RenderSettings,
     pub lights: Vec<Light>,
     /// How many of `lights` a `[light_grid]` generated (None: the scene has none).

@@ -4,7 +4,7 @@
 //! One function per section of the file, in the order they are checked.
 
 use super::file::SceneFile;
-use super::{AlphaTest, Camera, Material, MeshSource, Object, Projection, RenderSettings, Scene};
+use super::{AlphaTest, Material, MeshSource, Object, RenderSettings, Scene};
 use crate::assets;
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
@@ -39,12 +39,18 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
             .unwrap_or_default()
     });
 
-    let camera = camera(&f)?;
+    let camera = super::views::camera(&f.camera, "camera")?;
+    let views = super::views::views(&f, base)?;
     let render = render_settings(&f)?;
     let lights = super::lights::lights(&f)?;
     let (materials, material_index) = materials(&f, base)?;
     let objects = objects(&f, &material_index, base)?;
     let mirrors = objects.iter().filter(|o| o.mirror.is_some()).count();
+    if mirrors > 0 && !views.is_empty() {
+        bail!(
+            "views: a scene with [[views]] cannot also have mirrors (each orders the frame its own way)"
+        );
+    }
     // Each mirror has its own stencil value and one more per level inside it.
     if mirrors * (render.mirror_depth as usize + 1) > 255 {
         bail!(
@@ -67,75 +73,13 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         path: path.to_path_buf(),
         grid_lights: f.light_grid.as_ref().map(|g| g.count),
         camera,
+        views,
         render,
         lights,
         materials,
         objects,
         sprites,
         billboards,
-    })
-}
-
-/// Camera (the `[camera]` table).
-fn camera(f: &SceneFile) -> Result<Camera> {
-    let c = &f.camera;
-    finite("camera.eye", &c.eye)?;
-    finite("camera.target", &c.target)?;
-    finite("camera.up", &c.up)?;
-    finite("camera.near/far", &[c.near, c.far])?;
-    let eye = Vec3::from(c.eye);
-    let target = Vec3::from(c.target);
-    let up = Vec3::from(c.up);
-    if (target - eye).length() < 1e-6 {
-        bail!("camera: eye and target are the same point");
-    }
-    if (target - eye)
-        .normalize()
-        .cross(up.normalize_or_zero())
-        .length()
-        < 1e-6
-    {
-        bail!("camera.up: must not be parallel to the view direction (or zero)");
-    }
-    if !(c.near > 0.0 && c.far > c.near) {
-        bail!(
-            "camera.near/far: expected 0 < near < far, found near = {}, far = {}",
-            c.near,
-            c.far
-        );
-    }
-    let projection = match c.projection.as_str() {
-        "perspective" => {
-            if !(c.fov_y > 0.5 && c.fov_y < 179.0) {
-                bail!(
-                    "camera.fov_y: expected degrees in (0.5, 179), found {}",
-                    c.fov_y
-                );
-            }
-            Projection::Perspective {
-                fov_y_degrees: c.fov_y,
-            }
-        }
-        "orthographic" => {
-            let h = c.half_height.ok_or_else(|| {
-                anyhow!("camera.half_height: required for an orthographic camera")
-            })?;
-            if !(h.is_finite() && h > 0.0) {
-                bail!("camera.half_height: expected a positive number, found {h}");
-            }
-            Projection::Orthographic { half_height: h }
-        }
-        other => bail!(
-            "camera.projection: expected \"perspective\" or \"orthographic\", found \"{other}\""
-        ),
-    };
-    Ok(Camera {
-        eye,
-        target,
-        up,
-        projection,
-        near: c.near,
-        far: c.far,
     })
 }
 
@@ -356,7 +300,14 @@ fn objects(
     }
     super::update_models(&mut objects);
     for (i, o) in objects.iter().enumerate() {
-        if o.mirror.is_some() && o.mirror_plane().is_none() {
+        if o.mirror.as_ref().is_some_and(|m| m.curved) {
+            if o.curved_mirror().is_none() {
+                bail!(
+                    "objects[{i}]: a curved mirror must be scaled alike on every axis (a sphere), found scale {}",
+                    o.scale
+                );
+            }
+        } else if o.mirror.is_some() && o.mirror_plane().is_none() {
             bail!(
                 "objects[{i}]: its scale flattens the mirror's normal to zero: the mirror has no plane"
             );

@@ -12,6 +12,7 @@
 pub mod billboards;
 pub mod blending;
 pub mod deferred;
+pub mod fragment_tests;
 pub mod lighting;
 pub mod stencil;
 
@@ -30,6 +31,7 @@ pub static ALL: &[&Technique] = &[
     &deferred::deferred_lighting::DEFERRED_LIGHTING,
     &deferred::composite::COMPOSITE,
     &stencil::mirror::MIRROR,
+    &fragment_tests::viewports::VIEWPORTS,
     &billboards::billboards::BILLBOARDS,
     &blending::transparency::TRANSPARENCY,
 ];

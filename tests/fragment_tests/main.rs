@@ -15,3 +15,4 @@ mod common;
 
 mod depth_func;
 mod depth_precision;
+mod viewports;

@@ -551,3 +551,76 @@ fn the_roughening_texture_multiplies_the_reflection() {
     assert!(n > 10_000, "{n} pixels in the mirror");
     assert!(worst <= 2.0, "a pixel is {worst}/255 from bare x {factor}");
 }
+
+#[test]
+fn a_curved_mirror_shows_a_point_where_its_cpu_twin_puts_it() {
+    // A small green marker as far from the ball's centre as the eye is:
+    // there the image (reflected about its own tangent plane) is exact, and
+    // the GPU must draw it where `curved_image` projects.
+    let path = common::root().join("scenes/mirror-curved.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let base = Scene::parse(&text, &path).unwrap();
+    let ball = base.objects.iter().find(|o| o.mirror.is_some()).unwrap();
+    let sphere = ball.curved_mirror().expect("a curved mirror");
+    let (c, r) = (sphere.truncate(), sphere.w);
+    let eye = base.camera.eye;
+    let marker = c + glam::Vec3::new(1.0, 0.3, 0.8).normalize() * (eye - c).length();
+    let text = format!(
+        "{text}\n[materials.marker]\ndiffuse = [0.0, 1.0, 0.0]\nspecular = [0.0, 0.0, 0.0]\n\n[[objects]]\nname = \"marker\"\nmesh = \"sphere\"\nmaterial = \"marker\"\nposition = [{}, {}, {}]\nscale = [0.12, 0.12, 0.12]\n",
+        marker.x, marker.y, marker.z
+    );
+    let mut scene = plain_mirrors(Scene::parse(&text, &path).unwrap());
+    scene.render.ambient = glam::Vec3::splat(1.0);
+    scene.render.size = (1280, 720);
+    let ctx = common::context(common::backend());
+    let cap = capture(&ctx, &scene);
+    let inside = region(&cap, 1);
+    let (w, h) = (cap.width, inside.len() / cap.width);
+    // The marker's pixels inside the ball: green well above red and blue.
+    let (mut n, mut sx, mut sy) = (0.0, 0.0, 0.0);
+    for (i, p) in cap.image.pixels().enumerate() {
+        let [r8, g8, b8, _] = p.0;
+        if inside[i] && g8 > 120 && u32::from(r8) + u32::from(b8) < u32::from(g8) {
+            n += 1.0;
+            sx += (i % w) as f32 + 0.5;
+            sy += (i / w) as f32 + 0.5;
+        }
+    }
+    assert!(n >= 3.0, "the marker's image covers {n} pixels of the ball");
+    let image = gloss::frame::views::curved_image(marker, c, r, eye);
+    let clip =
+        scene.camera.projection(w as f32 / h as f32) * scene.camera.view() * image.extend(1.0);
+    let ndc = clip.truncate() / clip.w;
+    let (px, py) = (
+        (ndc.x + 1.0) * 0.5 * w as f32,
+        (1.0 - ndc.y) * 0.5 * h as f32,
+    );
+    let (gx, gy) = (sx / n, sy / n);
+    let off = ((gx - px).powi(2) + (gy - py).powi(2)).sqrt();
+    assert!(
+        off < 1.5,
+        "drawn at ({gx:.1}, {gy:.1}), predicted ({px:.1}, {py:.1}): {off:.2} px apart"
+    );
+}
+
+#[test]
+fn a_curved_mirror_must_be_a_sphere() {
+    let path = common::root().join("scenes/mirror-curved.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let flat = text.replacen(
+        "mesh = \"sphere\"\nposition = [0.0, 0.9, 0.0]",
+        "mesh = \"plane\"\nposition = [0.0, 0.9, 0.0]",
+        1,
+    );
+    let e = Scene::parse(&flat, &path).unwrap_err().to_string();
+    assert!(e.contains("mirror.curved") && e.contains("sphere"), "{e}");
+    let squashed = text.replacen("scale = [0.9, 0.9, 0.9]", "scale = [0.9, 0.5, 0.9]", 1);
+    let e = Scene::parse(&squashed, &path).unwrap_err().to_string();
+    assert!(e.contains("scaled alike on every axis"), "{e}");
+    let plan = gloss::techniques::plan(&Scene::parse(&text, &path).unwrap());
+    assert_eq!(plan.views.len(), 2);
+    assert!(
+        plan.views[1].curved.is_some() && plan.views[1].flip_winding,
+        "{plan}"
+    );
+}

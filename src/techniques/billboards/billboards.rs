@@ -161,7 +161,8 @@ impl RunPasses for Billboards {
         // 4. Over the opaque image, depth tested; blended in the blend modes.
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
-            gl.viewport(0, 0, output.width, output.height);
+            let (x, y, w, h) = f.view.rect(output.width, output.height);
+            gl.viewport(x, y, w, h);
             gl.enable(glow::DEPTH_TEST);
             gl.depth_func(scene.render.depth_func.gl());
             gl.depth_mask(true);
@@ -177,14 +178,14 @@ impl RunPasses for Billboards {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
-            if f.view.clip_plane.is_some() {
+            if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
 
             // 5. One instanced quad per billboard, corners from gl_VertexID.
             p.use_program();
             p.set_mat4("u_view", &view);
-            p.set_vec4("u_clip_plane", f.view.clip_uniform());
+            f.view.set_uniforms(p, f.uniforms.eye);
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_f32("u_sprite_count", b.sprite_count as f32);
             p.set_vec3("u_light", billboard_light(scene));

@@ -109,7 +109,6 @@ impl RunPasses for Transparency {
     fn run(&self, _: &Pass, f: &Frame) {
         let (gl, p, u) = (f.gl, &self.program, f.uniforms);
         let output = f.targets.get(OUTPUT);
-        let (w, h) = (output.width, output.height);
         // 1. The transparent list, 3. sorted (or not, to show why it must be).
         let items: Vec<usize> = (0..f.draws.items.len())
             .filter(|&i| f.draws.items[i].transparent)
@@ -133,7 +132,8 @@ impl RunPasses for Transparency {
         unsafe {
             // 4. Blend over the opaque image, furthest first.
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
-            gl.viewport(0, 0, w, h);
+            let (x, y, w, h) = f.view.rect(output.width, output.height);
+            gl.viewport(x, y, w, h);
             gl.enable(glow::DEPTH_TEST);
             let mut depth_func = f.scene.render.depth_func;
             gl.depth_func(depth_func.gl());
@@ -149,12 +149,12 @@ impl RunPasses for Transparency {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
-            if f.view.clip_plane.is_some() {
+            if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
 
             p.use_program();
-            p.set_vec4("u_clip_plane", f.view.clip_uniform());
+            f.view.set_uniforms(p, f.uniforms.eye);
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_vec3("u_eye", u.eye);
             p.set_vec3("u_ambient", f.scene.render.ambient);

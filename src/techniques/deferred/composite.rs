@@ -79,7 +79,8 @@ impl RunPasses for Composite {
         let light = f.targets.find(LIGHT_ACCUMULATION);
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
-            gl.viewport(0, 0, output.width, output.height);
+            let (x, y, w, h) = f.view.rect(output.width, output.height);
+            gl.viewport(x, y, w, h);
             gl.enable(glow::DEPTH_TEST);
             gl.depth_mask(true);
             if f.view.clears {

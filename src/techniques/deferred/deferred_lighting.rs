@@ -133,32 +133,37 @@ impl DeferredLighting {
         let output = f.targets.get(OUTPUT);
         // A frame with no lights has no light pre-pass and no light to add.
         let light = f.targets.find(LIGHT_ACCUMULATION);
-        let (w, h) = (output.width, output.height);
+        // The view's rectangle (all of the output but for split views).
+        let (x, y, w, h) = f.view.rect(output.width, output.height);
         unsafe {
             if f.view.clears {
                 // The G-buffer's depth becomes the output's depth.
                 gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(gbuf.id));
                 gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, Some(output.id));
                 gl.blit_framebuffer(
-                    0,
-                    0,
-                    w,
-                    h,
-                    0,
-                    0,
-                    w,
-                    h,
+                    x,
+                    y,
+                    x + w,
+                    y + h,
+                    x,
+                    y,
+                    x + w,
+                    y + h,
                     glow::DEPTH_BUFFER_BIT,
                     glow::NEAREST,
                 );
             }
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
-            gl.viewport(0, 0, w, h);
+            gl.viewport(x, y, w, h);
             let bg = u.clear_color;
             gl.clear_color(bg.x, bg.y, bg.z, 1.0);
             gl.enable(glow::DEPTH_TEST);
             if f.view.clears {
+                // Only this view's rectangle (glClear obeys the scissor test).
+                gl.enable(glow::SCISSOR_TEST);
+                gl.scissor(x, y, w, h);
                 gl.clear(glow::COLOR_BUFFER_BIT);
+                gl.disable(glow::SCISSOR_TEST);
                 gl.depth_func(glow::LEQUAL);
                 gl.depth_mask(false);
             } else {
@@ -173,7 +178,7 @@ impl DeferredLighting {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
-            if f.view.clip_plane.is_some() {
+            if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
             gl.enable(glow::CULL_FACE);
@@ -187,7 +192,7 @@ impl DeferredLighting {
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_diffuse_light", unit::LIGHT as i32);
             p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
-            p.set_vec4("u_clip_plane", f.view.clip_uniform());
+            f.view.set_uniforms(p, f.uniforms.eye);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[0].id));
             gl.active_texture(glow::TEXTURE0 + unit::SPECULAR_LIGHT);

@@ -95,7 +95,8 @@ impl RunPasses for DeferredShading {
         let target = f.targets.get(LIGHT_ACCUMULATION);
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
-            gl.viewport(0, 0, target.width, target.height);
+            let (x, y, w, h) = f.view.rect(target.width, target.height);
+            gl.viewport(x, y, w, h);
             // "It's super important that our background clear colour is black."
             gl.clear_color(0.0, 0.0, 0.0, 0.0);
             gl.clear(glow::COLOR_BUFFER_BIT);

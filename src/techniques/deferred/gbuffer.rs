@@ -87,7 +87,8 @@ impl RunPasses for GBufferPass {
         let target = f.targets.get(gbuffer::NAME);
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
-            gl.viewport(0, 0, target.width, target.height);
+            let (x, y, w, h) = f.view.rect(target.width, target.height);
+            gl.viewport(x, y, w, h);
             gl.clear_color(0.0, 0.0, 0.0, 0.0);
             gl.enable(glow::DEPTH_TEST);
             gl.depth_func(f.scene.render.depth_func.gl());
@@ -98,14 +99,14 @@ impl RunPasses for GBufferPass {
             // Linear albedo and specular are encoded to sRGB as they are stored.
             gl.enable(glow::FRAMEBUFFER_SRGB);
             // A reflected view (stencil/mirror.rs) cuts what lies behind its mirror.
-            if f.view.clip_plane.is_some() {
+            if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
 
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            p.set_vec4("u_clip_plane", f.view.clip_uniform());
+            f.view.set_uniforms(p, f.uniforms.eye);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             let mut depth_func = f.scene.render.depth_func;
             // Transparent objects are drawn later, sorted (blending/transparency.rs);

@@ -147,7 +147,8 @@ pub fn volume_pass(f: &Frame, p: &Program, draw_volumes: fn(&Frame, &Program)) {
     copy_depth(gl, gbuf, target);
     unsafe {
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
-        gl.viewport(0, 0, target.width, target.height);
+        let (x, y, w, h) = f.view.rect(target.width, target.height);
+        gl.viewport(x, y, w, h);
         // Light adds up on black.
         gl.clear_color(0.0, 0.0, 0.0, 0.0);
         gl.clear(glow::COLOR_BUFFER_BIT);

@@ -122,7 +122,8 @@ impl RunPasses for Forward {
         };
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
-            gl.viewport(0, 0, target.width, target.height);
+            let (x, y, w, h) = f.view.rect(target.width, target.height);
+            gl.viewport(x, y, w, h);
             let bg = u.clear_color;
             gl.clear_color(bg.x, bg.y, bg.z, 1.0);
             gl.enable(glow::DEPTH_TEST);
@@ -130,7 +131,12 @@ impl RunPasses for Forward {
             gl.depth_mask(true);
             // A view drawn into a mirror (stencil/mirror.rs) keeps the image.
             if f.view.clears {
+                // A split view clears only its own rectangle: glClear obeys
+                // the scissor test (notes 01 §4.2, a scissor box per viewport).
+                gl.enable(glow::SCISSOR_TEST);
+                gl.scissor(x, y, w, h);
                 gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
+                gl.disable(glow::SCISSOR_TEST);
             }
             gl.enable(glow::CULL_FACE);
             gl.cull_face(glow::BACK);
@@ -141,7 +147,7 @@ impl RunPasses for Forward {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
-            if f.view.clip_plane.is_some() {
+            if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
 
@@ -152,7 +158,7 @@ impl RunPasses for Forward {
             p.set_i32("u_light_count", u.light_count);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            p.set_vec4("u_clip_plane", f.view.clip_uniform());
+            f.view.set_uniforms(p, f.uniforms.eye);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             let mut depth_func = settings.depth_func;

@@ -35,7 +35,6 @@ use crate::frame::targets::{OUTPUT, TargetDesc};
 use crate::frame::views::View;
 use crate::frame::{Frame, FrameOrder, Programs, RunPasses, Stage, Technique};
 use crate::gl::program::Program;
-use crate::math::reflection;
 use crate::scene::knobs;
 use crate::scene::{MirrorOrder, Scene};
 use anyhow::Result;
@@ -98,30 +97,28 @@ fn order(scene: &Scene, _: &FrameLights) -> Option<FrameOrder> {
     }
 }
 
-/// The view of the world reflected in `mirror`, seen in `parent`.
+/// The view of the world reflected in `mirror`, seen in `parent`
+/// (src/frame/views.rs builds it). None when there is nothing to draw in
+/// it: a mirror without a plane, or a mirror seen in a curved one.
 fn reflected_view(
     scene: &Scene,
     parent: &View,
     mirror: usize,
     stencil: Option<u8>,
 ) -> Option<View> {
-    let o = &scene.objects[mirror];
+    let (o, r) = (&scene.objects[mirror], &scene.render);
+    if let Some(sphere) = o.curved_mirror() {
+        return View::in_curved_mirror(parent, &o.name, sphere, r.mirror_winding, stencil);
+    }
     let plane = o.mirror_plane()?;
-    let n = plane.truncate();
-    let r = parent.reflection * reflection::reflection(-plane.w * n, n)?;
-    let name = match parent.stencil {
-        None => format!("in mirror '{}'", o.name),
-        Some(_) => format!("in mirror '{}', {}", o.name, parent.name),
-    };
-    let odd = glam::Mat3::from_mat4(r).determinant() < 0.0;
-    Some(View {
-        name,
-        reflection: r,
-        clip_plane: scene.render.mirror_clip.then_some(plane),
+    View::in_mirror(
+        parent,
+        &o.name,
+        plane,
+        r.mirror_clip,
+        r.mirror_winding,
         stencil,
-        clears: false,
-        flip_winding: odd && scene.render.mirror_winding,
-    })
+    )
 }
 
 fn reflected_first(scene: &Scene, m: usize) -> Option<FrameOrder> {
@@ -191,16 +188,15 @@ fn visit(
                 .for_view(parent),
         )
     };
-    let Some(view) = reflected_view(scene, &order.views[parent], m, Some(value as u8)) else {
-        return;
-    };
+    // None: the mirror is drawn blank (marked and tinted, no reflection).
+    let view = reflected_view(scene, &order.views[parent], m, Some(value as u8));
     let how = if level == 1 { "" } else { " (increment)" };
     order.stages.push(own(
         "mirror mark",
         MARK,
         format!("mirror '{name}': stencil {value}{how} where it passes the depth test"),
     ));
-    if level <= scene.render.mirror_depth {
+    if let Some(view) = view.filter(|_| level <= scene.render.mirror_depth) {
         order.stages.push(own(
             "mirror depth clear",
             CLEAR_DEPTH,
@@ -252,7 +248,8 @@ impl RunPasses for Mirror {
         let value = pass.value as i32;
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
-            gl.viewport(0, 0, target.width, target.height);
+            let (x, y, w, h) = f.view.rect(target.width, target.height);
+            gl.viewport(x, y, w, h);
             gl.enable(glow::STENCIL_TEST);
             gl.enable(glow::DEPTH_TEST);
             match pass.step {
@@ -363,13 +360,13 @@ impl Mirror {
             gl.enable(glow::CULL_FACE);
             gl.cull_face(glow::BACK);
             gl.front_face(f.view.front_face(d.mirrored));
-            if f.view.clip_plane.is_some() {
+            if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
             p.use_program();
             p.set_mat4("u_model", &d.model);
             p.set_mat4("u_view_projection", &u.view_projection);
-            p.set_vec4("u_clip_plane", f.view.clip_uniform());
+            f.view.set_uniforms(p, f.uniforms.eye);
             p.set_vec3("u_color", color);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_bool("u_has_roughness", texture.is_some());

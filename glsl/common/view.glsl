@@ -1,0 +1,38 @@
+// The view a world pass draws for (src/frame/views.rs). A mirror's reflected
+// view cuts away what lies behind the mirror: a plane for a planar mirror
+// (gl_ClipDistance[0] = dot(plane, world), the plane in world space like the
+// vertex), the sphere's inside for a curved one. A curved mirror also moves
+// each vertex to its own mirror image (notes 05: "curved mirrors by
+// reflecting vertices differently"). GL_CLIP_DISTANCE0 is enabled only for
+// a reflected view; otherwise the clip distance is ignored.
+uniform vec4 u_clip_plane;
+uniform vec4 u_curved_mirror;   // centre xyz, radius w; w = 0: no curved mirror
+uniform vec3 u_curved_eye;      // the eye the curved mirror is seen from (world)
+
+// The image of `world` in a convex spherical mirror: reflected about its
+// own tangent plane, the one at the sphere point whose normal halves the
+// angle (seen from the centre) between the eye and the vertex. When the
+// vertex and the eye are equally far from the centre that point is the
+// exact reflection point (the law of reflection holds there), and the image
+// lies on the eye's ray through it; otherwise it is close. Its CPU twin is
+// `curved_image` in src/frame/views.rs.
+vec4 view_position(vec4 world) {
+    float r = u_curved_mirror.w;
+    if (r <= 0.0) {
+        return world;
+    }
+    vec3 c = u_curved_mirror.xyz;
+    vec3 to_eye = normalize(u_curved_eye - c);
+    vec3 to_p = normalize(world.xyz - c);
+    vec3 h = to_eye + to_p;
+    vec3 n = length(h) > 1e-6 ? normalize(h) : to_eye;
+    vec3 s = c + r * n;
+    return vec4(world.xyz - 2.0 * dot(world.xyz - s, n) * n, 1.0);
+}
+
+float clip_distance(vec4 world) {
+    if (u_curved_mirror.w > 0.0) {
+        return length(world.xyz - u_curved_mirror.xyz) - u_curved_mirror.w;
+    }
+    return dot(u_clip_plane, world);
+}

@@ -54,6 +54,34 @@ pub fn shipped_scenes() -> Vec<String> {
     v
 }
 
+/// The files ending in `.ext` in the `assets` folder beside the scene file
+/// `scene` (embedded for a shipped scene), sorted: what the demo's panel
+/// offers as meshes and textures.
+pub fn assets_beside(scene: &Path, ext: &str) -> Vec<PathBuf> {
+    let Some(dir) = scene.parent() else {
+        return Vec::new();
+    };
+    let assets = dir.join("assets");
+    let mut v: Vec<PathBuf> = if dir.to_str().is_some_and(|s| s.starts_with(EMBEDDED)) {
+        SCENES
+            .get_dir("assets")
+            .map(|d| {
+                d.files()
+                    .filter_map(|f| f.path().file_name())
+                    .map(|name| assets.join(name))
+                    .collect()
+            })
+            .unwrap_or_default()
+    } else {
+        std::fs::read_dir(&assets)
+            .map(|rd| rd.filter_map(|e| Some(e.ok()?.path())).collect())
+            .unwrap_or_default()
+    };
+    v.retain(|p| p.extension().is_some_and(|e| e == ext));
+    v.sort();
+    v
+}
+
 /// The path to read for a scene the user named: the file on disk if it
 /// exists, else the shipped scene of that path or name
 /// (`scenes/default.toml`, `default.toml` or `default`), else `path`

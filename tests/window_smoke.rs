@@ -160,6 +160,39 @@ fn demo_driven_by_keys_switches_inspects_and_screenshots() {
     );
 }
 
+/// The stencil inspector in the window: the mirrors scene, the pass
+/// inspector stepped to its third view (I three times: output colour,
+/// depth, stencil), a screenshot (F12). Each mirror's own stencil value
+/// shows in its own colour.
+#[test]
+fn demo_shows_the_mirrors_stencil_in_the_inspector() {
+    let script = format!(
+        r#"
+        "{GLOSS}" --backend window --debug --frames 200000 mirrors-several > gloss.log 2>&1 &
+        pid=$!
+        wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
+        xdotool windowfocus --sync "$wid"
+        sleep 3
+        for k in i i i F12; do xdotool key --clearmodifiers "$k"; sleep 2; done
+        xdotool key Escape
+        wait $pid
+        "#
+    );
+    let Some((dir, log)) = drive("gloss-demo-stencil", "1280x720x24", &script) else {
+        return;
+    };
+    let p = dir.join("gloss-screenshot-1.png");
+    let shot = image::open(&p)
+        .unwrap_or_else(|e| panic!("{}: {e}\n--- gloss.log ---\n{log}", p.display()))
+        .to_rgba8();
+    // mirror_depth 1: the left mirror holds 1, the right one 1 + 2 = 3.
+    for v in [1u8, 3] {
+        let c = gloss::renderer::stencil_color(v);
+        let n = shot.pixels().filter(|p| p.0 == c).count();
+        assert!(n > 5_000, "stencil value {v}: {n} pixels of its colour in {}", p.display());
+    }
+}
+
 /// The window resized by the X server: very large (3840 x 2160), 1 x 1,
 /// unmapped and mapped again, and back to 1280 x 720, with GL debug output
 /// on: no GL error, no panic, and the last screenshot has the last size.

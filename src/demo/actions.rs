@@ -23,6 +23,7 @@ impl Demo {
                 | Action::Reload
                 | Action::Settings(_)
                 | Action::LightCount(_)
+                | Action::LightGrid(_)
                 | Action::Lights(_)
                 | Action::Materials(_)
                 | Action::Objects(_)
@@ -54,9 +55,24 @@ impl Demo {
                 self.set_values(scene)
             }),
             Action::Materials(materials) => {
+                // A new texture must be loaded: a new renderer for it.
+                let textures = |m: &[crate::scene::Material]| -> Vec<_> {
+                    m.iter().map(|m| m.diffuse_texture.clone()).collect()
+                };
+                let reload = textures(&materials) != textures(&self.scene.materials);
                 let mut scene = self.scene.clone();
                 scene.materials = materials;
-                self.set_values(scene)
+                if reload {
+                    self.rebuild(&scene).map(|()| self.scene = scene)
+                } else {
+                    self.set_values(scene)
+                }
+            }
+            Action::LightGrid(grid) => {
+                let mut scene = self.scene.clone();
+                scene
+                    .set_light_grid(grid)
+                    .and_then(|()| self.set_values(scene))
             }
             Action::LightCount(n) => {
                 let mut scene = self.scene.clone();
@@ -91,10 +107,21 @@ impl Demo {
                 None => Ok(()),
             },
             Action::Objects(mut objects) => {
-                crate::scene::update_models(&mut objects);
-                let mut scene = self.scene.clone();
-                scene.objects = objects;
-                self.set_values(scene)
+                // A new mesh, material or parent changes what is uploaded
+                // and drawn with what: a new renderer. Transforms only: new values.
+                let structure = |o: &crate::scene::Object| (o.mesh.clone(), o.material, o.parent);
+                let rebuild =
+                    (objects.iter().map(structure)).ne(self.scene.objects.iter().map(structure));
+                no_parent_cycle(&objects).and_then(|()| {
+                    crate::scene::update_models(&mut objects);
+                    let mut scene = self.scene.clone();
+                    scene.objects = objects;
+                    if rebuild {
+                        self.rebuild(&scene).map(|()| self.scene = scene)
+                    } else {
+                        self.set_values(scene)
+                    }
+                })
             }
             Action::Camera(c) => {
                 self.orbit.set_lens(&c);
@@ -253,4 +280,44 @@ fn checked(mut lights: Vec<Light>) -> Result<Vec<Light>> {
         l.inner_angle = l.inner_angle.min(l.outer_angle);
     }
     Ok(lights)
+}
+
+/// Objects as the panel edited them: no object may be its own ancestor.
+fn no_parent_cycle(objects: &[crate::scene::Object]) -> Result<()> {
+    for (i, o) in objects.iter().enumerate() {
+        let mut up = o.parent;
+        for _ in 0..objects.len() {
+            let Some(p) = up else { break };
+            if p == i {
+                bail!(
+                    "object {}: that parent would make it its own ancestor",
+                    o.name
+                );
+            }
+            up = objects.get(p).and_then(|q| q.parent);
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::no_parent_cycle;
+
+    #[test]
+    fn a_parent_that_makes_a_cycle_is_refused() {
+        let mut objects = crate::scene::Scene::load(std::path::Path::new("scenes/default.toml"))
+            .unwrap()
+            .objects;
+        assert!(no_parent_cycle(&objects).is_ok());
+        // The rock is the box's child; the box made the rock's child: a cycle.
+        let rock = objects.iter().position(|o| o.name == "rock").unwrap();
+        let box_ = objects[rock].parent.unwrap();
+        objects[box_].parent = Some(rock);
+        let e = no_parent_cycle(&objects).unwrap_err().to_string();
+        assert!(e.contains("its own ancestor"), "{e}");
+        // Its own parent.
+        objects[box_].parent = Some(box_);
+        assert!(no_parent_cycle(&objects).is_err());
+    }
 }

@@ -22,7 +22,7 @@ pub(super) struct SceneFile {
     pub(super) render: RenderFile,
     #[serde(default)]
     pub(super) lights: Vec<LightFile>,
-    pub(super) light_grid: Option<LightGridFile>,
+    pub(super) light_grid: Option<LightGrid>,
     #[serde(default)]
     pub(super) materials: HashMap<String, MaterialFile>,
     #[serde(default)]
@@ -154,20 +154,23 @@ fn spot_outer() -> f32 {
     30.0
 }
 
-/// Many point lights placed by a seeded generator (the notes' 256-light example).
-#[derive(Deserialize, Debug, Clone)]
+/// `[light_grid]`: many point lights placed by a seeded generator (the
+/// notes' 256-light example). The scene keeps it, so the demo can edit it.
+#[derive(Deserialize, Debug, Clone, PartialEq)]
 #[serde(deny_unknown_fields)]
-pub(super) struct LightGridFile {
-    pub(super) count: usize,
+pub struct LightGrid {
+    pub count: usize,
     #[serde(default = "one_u64")]
-    pub(super) seed: u64,
+    pub seed: u64,
     /// [xmin, xmax, zmin, zmax]
-    pub(super) area: [f32; 4],
-    pub(super) height: [f32; 2],
+    pub area: [f32; 4],
+    /// [lowest, highest]
+    pub height: [f32; 2],
     #[serde(default = "one")]
-    pub(super) intensity: f32,
+    pub intensity: f32,
+    /// [Kc, Kl, Kq]
     #[serde(default = "default_attenuation")]
-    pub(super) attenuation: [f32; 3],
+    pub attenuation: [f32; 3],
 }
 
 fn one_u64() -> u64 {

@@ -1,9 +1,37 @@
 //! `[light_grid]`: many point lights placed by a seeded generator (the notes'
 //! 256-light example), the same lights for the same seed everywhere.
 
-use super::file::LightGridFile;
-use super::{Light, LightKind};
+use super::resolve::{finite, non_negative};
+use super::{Light, LightGrid, LightKind, Scene, validate_attenuation};
+use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
+
+/// Check a light grid as the loader does; errors name the key.
+pub(super) fn check(g: &LightGrid) -> Result<()> {
+    finite("light_grid.area", &g.area)?;
+    finite("light_grid.height", &g.height)?;
+    non_negative("light_grid.intensity", &[g.intensity])?;
+    let [kc, kl, kq] = g.attenuation;
+    validate_attenuation(kc, kl, kq).map_err(|e| anyhow!("light_grid.attenuation: {e}"))?;
+    if g.count > 100_000 {
+        bail!("light_grid.count: at most 100000 lights, found {}", g.count);
+    }
+    Ok(())
+}
+
+impl Scene {
+    /// Replace the generated lights with those of `grid` (the demo edits the
+    /// grid; `gloss bench --lights` its count). The lights the file lists stay.
+    pub fn set_light_grid(&mut self, grid: LightGrid) -> Result<()> {
+        check(&grid)?;
+        let fixed = self.lights.len() - self.grid_lights.unwrap_or(0);
+        self.lights.truncate(fixed);
+        self.lights.extend(generate_lights(&grid));
+        self.grid_lights = Some(grid.count);
+        self.light_grid = Some(grid);
+        Ok(())
+    }
+}
 
 /// A small deterministic generator (SplitMix64) so scenes need no rand crate
 /// and the same seed gives the same lights everywhere.
@@ -19,7 +47,7 @@ impl SplitMix {
     }
 }
 
-pub(super) fn generate_lights(g: &LightGridFile) -> Vec<Light> {
+pub(super) fn generate_lights(g: &LightGrid) -> Vec<Light> {
     let mut rng = SplitMix(g.seed);
     let [x0, x1, z0, z1] = g.area;
     (0..g.count)

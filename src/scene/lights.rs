@@ -72,14 +72,7 @@ pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
         });
     }
     if let Some(g) = &f.light_grid {
-        finite("light_grid.area", &g.area)?;
-        finite("light_grid.height", &g.height)?;
-        non_negative("light_grid.intensity", &[g.intensity])?;
-        let [kc, kl, kq] = g.attenuation;
-        validate_attenuation(kc, kl, kq).map_err(|e| anyhow!("light_grid.attenuation: {e}"))?;
-        if g.count > 100_000 {
-            bail!("light_grid.count: at most 100000 lights, found {}", g.count);
-        }
+        super::light_grid::check(g)?;
         lights.extend(generate_lights(g));
     }
     Ok(lights)

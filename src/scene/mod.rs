@@ -23,6 +23,7 @@ mod views;
 
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
 pub use billboards::{Billboard, MAX_BILLBOARDS};
+pub use file::LightGrid;
 pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
 pub use settings::{
@@ -36,7 +37,6 @@ use crate::math;
 use anyhow::{Context as _, Result, anyhow};
 use file::SceneFile;
 use glam::{Mat4, Vec3};
-use light_grid::generate_lights;
 use resolve::resolve;
 use serde::Deserialize as _;
 use std::path::{Path, PathBuf};
@@ -239,6 +239,8 @@ pub struct Scene {
     pub views: Vec<SplitView>,
     pub render: RenderSettings,
     pub lights: Vec<Light>,
+    /// The `[light_grid]` that generated the last `grid_lights` lights.
+    pub light_grid: Option<LightGrid>,
     /// How many of `lights` a `[light_grid]` generated (None: the scene has none).
     pub grid_lights: Option<usize>,
     pub materials: Vec<Material>,
@@ -343,20 +345,13 @@ impl Scene {
     /// Replace the generated lights with `count` of them (`gloss bench --lights`).
     /// Scenes without a `[light_grid]` keep their lights.
     pub fn set_light_count(&mut self, count: usize) -> Result<()> {
-        let text = read_text(&self.path)?;
-        let file: SceneFile = toml::from_str(&text)?;
-        let mut grid = file.light_grid.ok_or_else(|| {
+        let grid = self.light_grid.clone().ok_or_else(|| {
             anyhow!(
                 "{}: has no [light_grid] to vary the light count of",
                 self.path.display()
             )
         })?;
-        grid.count = count;
-        let fixed = file.lights.len();
-        self.lights.truncate(fixed);
-        self.lights.extend(generate_lights(&grid));
-        self.grid_lights = Some(count);
-        Ok(())
+        self.set_light_grid(LightGrid { count, ..grid })
     }
 
     /// How many objects the opaque passes draw (their material's opacity is 1).

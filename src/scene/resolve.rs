@@ -72,6 +72,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         name,
         path: path.to_path_buf(),
         grid_lights: f.light_grid.as_ref().map(|g| g.count),
+        light_grid: f.light_grid.clone(),
         camera,
         views,
         render,

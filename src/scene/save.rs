@@ -6,7 +6,7 @@
 //! stay valid from the new file's folder: absolute for files on disk,
 //! `embedded:scenes/...` for a shipped scene's assets.
 
-use super::{Camera, Light, LightKind, Projection, Scene, knobs, read_text};
+use super::{Camera, Light, LightKind, MeshSource, Projection, Scene, knobs, read_text};
 use crate::assets;
 use anyhow::{Context as _, Result, anyhow};
 use std::path::Path;
@@ -28,13 +28,16 @@ impl Scene {
                 .expect("a knob writes valid TOML");
             render.insert(key.to_string(), v["v"].clone());
         }
-        if let (Some(n), Some(grid)) = (
-            self.grid_lights,
-            table
-                .get_mut("light_grid")
-                .and_then(toml::Value::as_table_mut),
-        ) {
-            grid.insert("count".into(), toml::Value::Integer(n as i64));
+        // The light grid as it is now (the demo edits every parameter).
+        if let Some(g) = &self.light_grid {
+            let mut grid = toml::Table::new();
+            grid.insert("count".into(), toml::Value::Integer(g.count as i64));
+            grid.insert("seed".into(), toml::Value::Integer(g.seed as i64));
+            grid.insert("area".into(), floats(&g.area));
+            grid.insert("height".into(), floats(&g.height));
+            grid.insert("intensity".into(), toml::Value::Float(g.intensity.into()));
+            grid.insert("attenuation".into(), floats(&g.attenuation));
+            table.insert("light_grid".into(), toml::Value::Table(grid));
         }
         // The camera as it is now (the demo saves its current view).
         table.insert("camera".into(), camera_table(&self.camera));
@@ -59,6 +62,10 @@ impl Scene {
                     t.insert("specular".into(), vec3(m.specular));
                     t.insert("shininess".into(), toml::Value::Float(m.shininess.into()));
                     t.insert("opacity".into(), toml::Value::Float(m.opacity.into()));
+                    match &m.diffuse_texture {
+                        Some(p) => t.insert("diffuse_texture".into(), path(p)),
+                        None => t.remove("diffuse_texture"),
+                    };
                     match m.depth_func {
                         Some(f) => t.insert("depth_func".into(), f.name().into()),
                         None => t.remove("depth_func"),
@@ -66,13 +73,27 @@ impl Scene {
                 }
             }
         }
-        // The objects' local transforms, as they are now.
+        // The objects' local transforms, meshes, materials and parents, as
+        // they are now (material 0 is gloss's default, named by no key).
         if let Some(objects) = table.get_mut("objects").and_then(toml::Value::as_array_mut) {
             for (t, o) in objects.iter_mut().zip(&self.objects) {
                 if let Some(t) = t.as_table_mut() {
                     t.insert("position".into(), vec3(o.position));
                     t.insert("rotation".into(), vec3(o.rotation));
                     t.insert("scale".into(), vec3(o.scale));
+                    let mesh = match &o.mesh {
+                        MeshSource::Obj(p) => path(p),
+                        builtin => format!("{builtin:?}").to_lowercase().into(),
+                    };
+                    t.insert("mesh".into(), mesh);
+                    match o.material {
+                        0 => t.remove("material"),
+                        i => t.insert("material".into(), self.materials[i].name.clone().into()),
+                    };
+                    match o.parent {
+                        None => t.remove("parent"),
+                        Some(p) => t.insert("parent".into(), self.objects[p].name.clone().into()),
+                    };
                 }
             }
         }
@@ -106,6 +127,9 @@ impl Scene {
                     .filter(|m| m.as_str().is_some_and(|s| s.ends_with(".obj")))
                 {
                     fix(m);
+                }
+                if let Some(r) = o.get_mut("mirror").and_then(|m| m.get_mut("roughness")) {
+                    fix(r);
                 }
             }
         }
@@ -208,4 +232,17 @@ fn camera_table(c: &Camera) -> toml::Value {
     t.insert("near".into(), f(c.near));
     t.insert("far".into(), f(c.far));
     toml::Value::Table(t)
+}
+
+/// A TOML array of floats.
+fn floats(v: &[f32]) -> toml::Value {
+    toml::Value::Array(v.iter().map(|&x| toml::Value::Float(x.into())).collect())
+}
+
+/// A path the loader resolved (relative to the working directory, or
+/// embedded) as TOML text that stays valid from any folder: absolute, or
+/// embedded.
+fn path(p: &std::path::Path) -> toml::Value {
+    let p = p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
+    p.to_string_lossy().into_owned().into()
 }

@@ -113,3 +113,83 @@ fn save_as_keeps_opacity_depth_functions_and_the_sort_knob() {
     back.save_as(&file).unwrap();
     assert_eq!(Scene::load(&file).unwrap().materials, back.materials);
 }
+
+#[test]
+fn meshes_materials_parents_textures_light_types_and_the_light_grid_survive_save_as() {
+    // The panel's structural edits: what a fresh renderer draws from the
+    // edited scene, the saved and reloaded file draws too.
+    let ctx = common::context(common::backend());
+    let dir = std::env::temp_dir().join("gloss-save-structure");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let root = common::root();
+    let mut scene = Scene::load(&root.join("scenes/default.toml")).unwrap();
+    let index = |name: &str| scene.objects.iter().position(|o| o.name == name).unwrap();
+    let (ball, box_, ring) = (index("ball"), index("box"), index("ring"));
+    let jade = scene
+        .materials
+        .iter()
+        .position(|m| m.name == "jade")
+        .unwrap();
+    let bricks = scene.materials[scene.objects[box_].material]
+        .diffuse_texture
+        .clone();
+    scene.objects[ball].mesh = gloss::scene::MeshSource::Torus;
+    scene.objects[ball].material = jade;
+    scene.objects[ring].parent = Some(box_);
+    scene.objects[ring].material = 0; // gloss's default material
+    gloss::scene::update_models(&mut scene.objects);
+    let floor = scene
+        .materials
+        .iter()
+        .position(|m| m.name == "floor")
+        .unwrap();
+    scene.materials[floor].diffuse_texture = bricks;
+    scene.lights[0].kind = gloss::scene::LightKind::Spot;
+    scene.lights[0].direction = glam::Vec3::new(-0.5, -1.0, -0.3).normalize();
+    scene.render.size = (320, 180);
+    let edited = render_scene(&ctx, &scene, Output::Srgb8)
+        .unwrap()
+        .read_image();
+    let path = dir.join("structure.toml");
+    scene.save_as(&path).unwrap();
+    let mut again = Scene::load(&path).unwrap();
+    again.render.size = scene.render.size;
+    assert_eq!(again.objects[ball].mesh, gloss::scene::MeshSource::Torus);
+    assert_eq!(again.objects[ring].parent, Some(box_));
+    assert_eq!(again.objects[ring].material, 0);
+    let saved = render_scene(&ctx, &again, Output::Srgb8)
+        .unwrap()
+        .read_image();
+    common::assert_close(
+        "save-structure",
+        &saved,
+        &edited,
+        &gloss::image_compare::Tolerance {
+            threshold: 1.0 / 255.0,
+            max_frac_over: 0.0,
+            max_abs: Some(1.0 / 255.0),
+        },
+    );
+
+    // The light grid's parameters, not only its count.
+    let mut many = Scene::load(&root.join("scenes/many-lights.toml")).unwrap();
+    let mut grid = many.light_grid.clone().unwrap();
+    grid.seed = 7;
+    grid.count = 40;
+    grid.intensity *= 2.0;
+    grid.height = [0.5, 1.5];
+    many.set_light_grid(grid.clone()).unwrap();
+    let path = dir.join("grid.toml");
+    many.save_as(&path).unwrap();
+    let again = Scene::load(&path).unwrap();
+    assert_eq!(again.light_grid, Some(grid));
+    assert_eq!(again.lights, many.lights);
+    // A bad grid is refused with the key named, and the scene is unchanged.
+    let mut bad = again.light_grid.clone().unwrap();
+    bad.attenuation = [0.0, 0.0, 0.0];
+    let before = many.lights.clone();
+    let e = many.set_light_grid(bad).unwrap_err().to_string();
+    assert!(e.contains("light_grid.attenuation"), "{e}");
+    assert_eq!(many.lights, before);
+}

@@ -33,6 +33,8 @@ pub enum Action {
     Settings(RenderSettings),
     /// The number of lights of the scene's `[light_grid]`.
     LightCount(usize),
+    /// The scene's `[light_grid]`, edited.
+    LightGrid(crate::scene::LightGrid),
     /// Edited lights (all of them, in the scene's order).
     Lights(Vec<Light>),
     /// Edited materials (all of them).
@@ -186,6 +188,9 @@ impl PanelState {
                         }
                         ui.label(format!("(+{fixed} fixed)"));
                     });
+                }
+                if let Some(g) = values::light_grid(ui, input.scene) {
+                    actions.push(Action::LightGrid(g));
                 }
                 if let Some(l) = values::lights(ui, input.scene) {
                     actions.push(Action::Lights(l));

@@ -1,10 +1,13 @@
-//! The scene's lights and materials, editable live: each light's colour,
-//! intensity, position, direction, Kc/Kl/Kq attenuation and cone angles;
-//! each material's diffuse and specular colours, shininess and opacity. Lights made
-//! by a `[light_grid]` change through its count instead.
+//! The scene's lights, materials and objects, editable live: each light's
+//! type, colour, intensity, position, direction, Kc/Kl/Kq attenuation and
+//! cone angles; the light grid's parameters; each material's diffuse and
+//! specular colours, shininess, opacity and texture; each object's
+//! transform, mesh, material and parent; the camera's lens.
 
-use crate::scene::{Camera, LightKind, Object, Projection, Scene};
+use crate::assets;
+use crate::scene::{Camera, LightGrid, LightKind, Material, MeshSource, Object, Projection, Scene};
 use glam::Vec3;
+use std::path::PathBuf;
 
 fn vec3(
     ui: &mut egui::Ui,
@@ -59,6 +62,16 @@ pub fn lights(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::Ligh
                 egui::CollapsingHeader::new(format!("light {i}: {kind}"))
                     .id_salt(("light", i))
                     .show(ui, |ui| {
+                        ui.horizontal(|ui| {
+                            ui.label("type");
+                            for (k, word) in [
+                                (LightKind::Directional, "directional"),
+                                (LightKind::Point, "point"),
+                                (LightKind::Spot, "spot"),
+                            ] {
+                                changed |= ui.selectable_value(&mut l.kind, k, word).changed();
+                            }
+                        });
                         changed |= vec3(ui, "colour", &mut l.color, 0.0..=10.0);
                         changed |= number(ui, "intensity", &mut l.intensity, 0.0..=1000.0);
                         if l.kind != LightKind::Directional {
@@ -98,6 +111,7 @@ pub fn materials(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::M
                         changed |= number(ui, "shininess", &mut m.shininess, 1.0..=4096.0);
                         // Below 1 the transparency pass draws it (notes 01 §4.5).
                         changed |= number(ui, "opacity", &mut m.opacity, 0.0..=1.0);
+                        changed |= texture(ui, scene, i, m);
                     });
             }
         });
@@ -143,6 +157,166 @@ pub fn objects(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<Object>> {
                         changed |= vec3(ui, "scale", &mut o.scale, -100.0..=100.0);
                     });
             }
+            egui::CollapsingHeader::new("mesh, material, parent")
+                .id_salt("object structure")
+                .show(ui, |ui| {
+                    changed |= object_structure(ui, scene, &mut objects);
+                });
         });
     changed.then_some(objects)
+}
+
+/// The `[light_grid]`'s seed, area, heights, intensity and attenuation
+/// (its count is the slider above); Some(new grid) when one changed.
+pub fn light_grid(ui: &mut egui::Ui, scene: &Scene) -> Option<LightGrid> {
+    let mut g = scene.light_grid.clone()?;
+    let mut changed = false;
+    egui::CollapsingHeader::new("Light grid")
+        .default_open(false)
+        .show(ui, |ui| {
+            ui.horizontal(|ui| {
+                ui.label("seed");
+                changed |= ui.add(egui::DragValue::new(&mut g.seed)).changed();
+            });
+            ui.horizontal(|ui| {
+                ui.label("area x0 x1 z0 z1");
+                for c in &mut g.area {
+                    changed |= ui.add(egui::DragValue::new(c).speed(0.05)).changed();
+                }
+            });
+            ui.horizontal(|ui| {
+                ui.label("height");
+                for c in &mut g.height {
+                    changed |= ui.add(egui::DragValue::new(c).speed(0.05)).changed();
+                }
+            });
+            changed |= number(ui, "intensity", &mut g.intensity, 0.0..=1000.0);
+            let mut k = Vec3::from(g.attenuation);
+            if vec3(ui, "Kc Kl Kq", &mut k, 0.0..=100.0) {
+                g.attenuation = k.to_array();
+                changed = true;
+            }
+        });
+    changed.then_some(g)
+}
+
+/// A choice among `names` (index `i`); true when it changed.
+fn choose(
+    ui: &mut egui::Ui,
+    label: &str,
+    salt: (&str, usize),
+    names: &[String],
+    i: &mut usize,
+) -> bool {
+    let before = *i;
+    ui.horizontal(|ui| {
+        ui.label(label);
+        egui::ComboBox::from_id_salt(salt)
+            .selected_text(names.get(*i).map_or("?", String::as_str))
+            .show_ui(ui, |ui| {
+                for (j, n) in names.iter().enumerate() {
+                    ui.selectable_value(i, j, n);
+                }
+            });
+    });
+    *i != before
+}
+
+/// The name a mesh goes by in the panel.
+fn mesh_name(m: &MeshSource) -> String {
+    match m {
+        MeshSource::Obj(p) => p.file_name().map_or_else(
+            || p.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        ),
+        other => format!("{other:?}").to_lowercase(),
+    }
+}
+
+/// What an object can be made of: the built-in meshes, the scene's OBJ
+/// files and those in the assets folder beside the scene.
+fn mesh_choices(scene: &Scene) -> Vec<MeshSource> {
+    use MeshSource::*;
+    let mut v = vec![Sphere, Icosphere, Cube, Plane, Cylinder, Cone, Torus];
+    let objs = scene.objects.iter().map(|o| o.mesh.clone());
+    let files = assets::assets_beside(&scene.path, "obj")
+        .into_iter()
+        .map(Obj);
+    for m in objs.chain(files) {
+        if !v.contains(&m) {
+            v.push(m);
+        }
+    }
+    v
+}
+
+/// Each object's mesh, material and parent; Some(new objects) when one
+/// changed (the demo builds a new renderer: a mesh may need uploading).
+pub fn object_structure(ui: &mut egui::Ui, scene: &Scene, objects: &mut [Object]) -> bool {
+    let meshes = mesh_choices(scene);
+    let mesh_names: Vec<String> = meshes.iter().map(mesh_name).collect();
+    let materials: Vec<String> = scene.materials.iter().map(|m| m.name.clone()).collect();
+    let mut parents: Vec<String> = vec!["(none)".into()];
+    parents.extend(scene.objects.iter().map(|o| o.name.clone()));
+    let mut changed = false;
+    for (i, o) in objects.iter_mut().enumerate() {
+        ui.push_id(("structure", i), |ui| {
+            ui.label(&o.name);
+            if o.mirror.is_some() {
+                ui.label("  a mirror: its mesh stays (it must be flat, or a sphere)");
+            } else {
+                let mut m = meshes.iter().position(|x| *x == o.mesh).unwrap_or(0);
+                if choose(ui, "  mesh", ("mesh", i), &mesh_names, &mut m) {
+                    o.mesh = meshes[m].clone();
+                    changed = true;
+                }
+            }
+            changed |= choose(
+                ui,
+                "  material",
+                ("material", i),
+                &materials,
+                &mut o.material,
+            );
+            let mut p = o.parent.map_or(0, |p| p + 1);
+            if choose(ui, "  parent", ("parent", i), &parents, &mut p) {
+                o.parent = p.checked_sub(1);
+                changed = true;
+            }
+        });
+    }
+    changed
+}
+
+/// A material's diffuse texture among the scene's textures and the PNGs
+/// beside it; true when it changed.
+pub fn texture(ui: &mut egui::Ui, scene: &Scene, i: usize, m: &mut Material) -> bool {
+    let mut choices: Vec<Option<PathBuf>> = vec![None];
+    let used = scene
+        .materials
+        .iter()
+        .filter_map(|m| m.diffuse_texture.clone());
+    for p in used.chain(assets::assets_beside(&scene.path, "png")) {
+        if !choices.contains(&Some(p.clone())) {
+            choices.push(Some(p));
+        }
+    }
+    let names: Vec<String> = choices
+        .iter()
+        .map(|c| match c {
+            None => "(none)".to_string(),
+            Some(p) => p
+                .file_name()
+                .map_or_else(|| p.display().to_string(), |n| n.to_string_lossy().into()),
+        })
+        .collect();
+    let mut k = choices
+        .iter()
+        .position(|c| *c == m.diffuse_texture)
+        .unwrap_or(0);
+    if choose(ui, "texture", ("texture", i), &names, &mut k) {
+        m.diffuse_texture = choices[k].clone();
+        return true;
+    }
+    false
 }

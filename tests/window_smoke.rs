@@ -189,7 +189,11 @@ fn demo_shows_the_mirrors_stencil_in_the_inspector() {
     for v in [1u8, 3] {
         let c = gloss::renderer::stencil_color(v);
         let n = shot.pixels().filter(|p| p.0 == c).count();
-        assert!(n > 5_000, "stencil value {v}: {n} pixels of its colour in {}", p.display());
+        assert!(
+            n > 5_000,
+            "stencil value {v}: {n} pixels of its colour in {}",
+            p.display()
+        );
     }
 }
 

@@ -5,6 +5,7 @@
 //! * `ripples.png`: 256x256 linear greyscale ripples, 0.55 to 1, that roughen
 //!   a mirror's reflection (a lake's surface);
 //! * `knot.obj`: a (2, 3) torus knot tube, 3072 triangles, with normals and uvs;
+//! * `disc.obj`: a flat unit disc facing +y (a round mirror);
 //! * `grid.obj`: a 2 x 2 plane in 32 x 32 squares: a floor fine enough for
 //!   a curved mirror, which moves vertices, not pixels;
 //! * `rock.obj`: a low-poly displaced icosphere, uvs but NO normals, so that
@@ -34,6 +35,7 @@ fn main() -> Result<()> {
         true,
         "torus knot (2, 3)",
     )?;
+    write_obj(&dir.join("disc.obj"), &disc(48), true, "a unit disc, 48 sectors")?;
     write_obj(
         &dir.join("grid.obj"),
         &geometry::plane(2.0, 2.0, 32),
@@ -159,6 +161,27 @@ fn checker() -> image::RgbImage {
             teal
         })
     })
+}
+
+/// A unit disc in the xz plane facing +y: a fan of `n` triangles.
+fn disc(n: u32) -> MeshData {
+    let mut m = MeshData::default();
+    let vertex = |p: Vec3| Vertex {
+        position: p.to_array(),
+        normal: [0.0, 1.0, 0.0],
+        uv: [0.5 + 0.5 * p.x, 0.5 - 0.5 * p.z],
+        tangent: [1.0, 0.0, 0.0, 1.0],
+    };
+    m.vertices.push(vertex(Vec3::ZERO));
+    for i in 0..n {
+        let a = std::f32::consts::TAU * i as f32 / n as f32;
+        // Counter-clockwise seen from +y: x then -z.
+        m.vertices.push(vertex(Vec3::new(a.cos(), 0.0, -a.sin())));
+    }
+    for i in 0..n {
+        m.indices.extend_from_slice(&[0, 1 + i, 1 + (i + 1) % n]);
+    }
+    m
 }
 
 fn ripples() -> image::RgbImage {

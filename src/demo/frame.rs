@@ -72,9 +72,13 @@ impl Demo {
                         fb,
                     ),
                     _ if v.stencil => {
-                        let r = &run.renderer;
-                        let (sw, sh) = (r.width as u32, r.height as u32);
-                        let img = crate::renderer::stencil_image(&r.read_stencil(), sw, sh);
+                        let (sw, sh) = (run.renderer.width as u32, run.renderer.height as u32);
+                        // At the end of the frame, or as pass n left it.
+                        let values = match run.panel.stencil_after {
+                            0 => run.renderer.read_stencil(),
+                            n => run.renderer.stencil_after(&camera, n)?,
+                        };
+                        let img = crate::renderer::stencil_image(&values, sw, sh);
                         let img = image::imageops::flip_vertical(&img);
                         let texture = crate::gl::texture::Texture::from_rgba8(
                             &run.ctx.gl,

@@ -77,6 +77,9 @@ pub struct PanelState {
     pub help: bool,
     pub inspect: Option<usize>,
     pub exposure: f32,
+    /// The stencil view shows the stencil right after this pass (1-based,
+    /// as `gloss plan` numbers them; 0: at the end of the frame).
+    pub stencil_after: usize,
     pub timings: Timings,
     /// Time each pass (glFinish after it) while the panel is shown.
     pub pass_times: bool,
@@ -93,6 +96,7 @@ impl PanelState {
             help: false,
             inspect: None,
             exposure: 1.0,
+            stencil_after: 0,
             timings: Timings::default(),
             pass_times: true,
             thumbnails: true,
@@ -255,6 +259,19 @@ impl PanelState {
                         .logarithmic(true)
                         .text("exposure (light views)"),
                 );
+                if current.and_then(|i| input.views.get(i)).is_some_and(|v| v.stencil) {
+                    // The stencil as any pass left it (the frame is drawn
+                    // again up to that pass).
+                    let passes = &input.plan.passes;
+                    self.stencil_after = self.stencil_after.min(passes.len());
+                    ui.add(
+                        egui::Slider::new(&mut self.stencil_after, 0..=passes.len())
+                            .text("stencil after pass (0: end of frame)"),
+                    );
+                    if let Some(p) = self.stencil_after.checked_sub(1).and_then(|i| passes.get(i)) {
+                        ui.small(format!("{}. {} (view {}): {}", self.stencil_after, p.name, p.view, p.draws));
+                    }
+                }
                 ui.horizontal(|ui| {
                     if ui.button("compare with reference").on_hover_text(
                         "render forward with the same camera and size; show RMSE, max and the difference (a view above)",

@@ -35,7 +35,12 @@ fn main() -> Result<()> {
         true,
         "torus knot (2, 3)",
     )?;
-    write_obj(&dir.join("disc.obj"), &disc(48), true, "a unit disc, 48 sectors")?;
+    write_obj(
+        &dir.join("disc.obj"),
+        &disc(48),
+        true,
+        "a unit disc, 48 sectors",
+    )?;
     write_obj(
         &dir.join("grid.obj"),
         &geometry::plane(2.0, 2.0, 32),

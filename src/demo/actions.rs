@@ -24,6 +24,7 @@ impl Demo {
                 | Action::Settings(_)
                 | Action::LightCount(_)
                 | Action::LightGrid(_)
+                | Action::Views(_)
                 | Action::Lights(_)
                 | Action::Materials(_)
                 | Action::Objects(_)
@@ -68,6 +69,15 @@ impl Demo {
                     self.set_values(scene)
                 }
             }
+            Action::Views(views) => views
+                .iter()
+                .enumerate()
+                .try_for_each(|(i, v)| crate::scene::check_viewport(i, v.viewport))
+                .and_then(|()| {
+                    let mut scene = self.scene.clone();
+                    scene.views = views;
+                    self.set_values(scene)
+                }),
             Action::LightGrid(grid) => {
                 let mut scene = self.scene.clone();
                 scene

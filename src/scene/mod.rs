@@ -30,7 +30,7 @@ pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, DepthFunc, MirrorOrder, RenderPath,
     Shading,
 };
-pub use views::SplitView;
+pub use views::{SplitView, check_viewport};
 
 use crate::assets;
 use crate::math;

@@ -62,6 +62,8 @@ impl Scene {
                     t.insert("specular".into(), vec3(m.specular));
                     t.insert("shininess".into(), toml::Value::Float(m.shininess.into()));
                     t.insert("opacity".into(), toml::Value::Float(m.opacity.into()));
+                    t.insert("alpha_test".into(), m.alpha_test.name().into());
+                    t.insert("alpha_ref".into(), toml::Value::Float(m.alpha_ref.into()));
                     match &m.diffuse_texture {
                         Some(p) => t.insert("diffuse_texture".into(), path(p)),
                         None => t.remove("diffuse_texture"),
@@ -94,6 +96,26 @@ impl Scene {
                         None => t.remove("parent"),
                         Some(p) => t.insert("parent".into(), self.objects[p].name.clone().into()),
                     };
+                    if let (Some(m), Some(mt)) = (
+                        &o.mirror,
+                        t.get_mut("mirror").and_then(toml::Value::as_table_mut),
+                    ) {
+                        mt.insert("tint".into(), vec3(m.tint));
+                        mt.insert(
+                            "reflectance".into(),
+                            toml::Value::Float(m.reflectance.into()),
+                        );
+                        mt.insert("infinite".into(), m.infinite.into());
+                        mt.insert("covered".into(), m.covered.into());
+                    }
+                }
+            }
+        }
+        // The split views' rectangles, as they are now.
+        if let Some(views) = table.get_mut("views").and_then(toml::Value::as_array_mut) {
+            for (t, v) in views.iter_mut().zip(&self.views) {
+                if let Some(t) = t.as_table_mut() {
+                    t.insert("viewport".into(), floats(&v.viewport));
                 }
             }
         }

@@ -42,20 +42,7 @@ pub(super) fn views(f: &SceneFile, _base: &Path) -> Result<Vec<SplitView>> {
     let mut out = Vec::new();
     for (i, v) in f.views.iter().enumerate() {
         let key = format!("views[{i}]");
-        finite(&format!("{key}.viewport"), &v.viewport)?;
-        let [x, y, w, h] = v.viewport;
-        if !(x >= 0.0
-            && y >= 0.0
-            && w > 0.0
-            && h > 0.0
-            && x + w <= 1.0 + 1e-6
-            && y + h <= 1.0 + 1e-6)
-        {
-            bail!(
-                "{key}.viewport: expected [x, y, width, height] fractions with the rectangle inside [0, 1] and not empty, found {:?}",
-                v.viewport
-            );
-        }
+        check_viewport(i, v.viewport)?;
         let camera = v
             .camera
             .as_ref()
@@ -68,6 +55,20 @@ pub(super) fn views(f: &SceneFile, _base: &Path) -> Result<Vec<SplitView>> {
         });
     }
     Ok(out)
+}
+
+/// Check view `i`'s rectangle: inside the frame and not empty.
+pub fn check_viewport(i: usize, viewport: [f32; 4]) -> Result<()> {
+    let key = format!("views[{i}].viewport");
+    finite(&key, &viewport)?;
+    let [x, y, w, h] = viewport;
+    let inside = x >= 0.0 && y >= 0.0 && x + w <= 1.0 + 1e-6 && y + h <= 1.0 + 1e-6;
+    if !(inside && w > 0.0 && h > 0.0) {
+        bail!(
+            "{key}: expected [x, y, width, height] fractions with the rectangle inside [0, 1] and not empty, found {viewport:?}"
+        );
+    }
+    Ok(())
 }
 
 /// Check a camera table (`key` names it in messages: "camera", "views[2].camera").

@@ -293,8 +293,6 @@ fn the_pass_is_planned_only_for_transparent_materials_and_runs_last() {
 #[test]
 fn the_pass_restores_the_gl_state_in_every_path() {
     let ctx = common::context(common::backend());
-    let gl = &ctx.gl;
-    let fresh = common::gl_state(gl);
     for path in [
         RenderPath::Forward,
         RenderPath::Deferred,
@@ -302,27 +300,7 @@ fn the_pass_restores_the_gl_state_in_every_path() {
         RenderPath::Prepass,
     ] {
         let scene = with_path(&common::scene("transparency.toml"), path);
-        let mut r = Renderer::new(
-            gl,
-            &ctx.debug,
-            &scene,
-            &gloss::gl::program::Sources::Embedded,
-            96,
-            54,
-        )
-        .unwrap();
-        let mut changed = Vec::new();
-        r.render_inspected(&scene.camera, &mut |pass| {
-            for (b, a) in fresh.iter().zip(&common::gl_state(gl)) {
-                if b != a {
-                    changed.push(format!(
-                        "{} left {} = {} (was {})",
-                        pass.name, a.0, a.1, b.1
-                    ));
-                }
-            }
-        })
-        .unwrap();
+        let changed = common::state_left_changed(&ctx, &scene, 96, 54);
         assert!(changed.is_empty(), "{path:?}:\n  {}", changed.join("\n  "));
     }
 }

@@ -166,3 +166,33 @@ pub fn gl_state(gl: &glow::Context) -> Vec<(String, i64)> {
     }
     v
 }
+
+/// Draw one frame of `scene` at `w` x `h` and list every GL state a pass
+/// left different from the state before the frame (the fresh context's):
+/// empty when every pass restored what it changed.
+pub fn state_left_changed(ctx: &Headless, scene: &Scene, w: i32, h: i32) -> Vec<String> {
+    let gl = &ctx.gl;
+    let before = gl_state(gl);
+    let mut r = gloss::renderer::Renderer::new(
+        gl,
+        &ctx.debug,
+        scene,
+        &gloss::gl::program::Sources::Embedded,
+        w,
+        h,
+    )
+    .unwrap_or_else(|e| panic!("{}: {e:#}", scene.name));
+    let mut changed = Vec::new();
+    r.render_inspected(&scene.camera, &mut |pass| {
+        for (b, a) in before.iter().zip(&gl_state(gl)) {
+            if b != a {
+                changed.push(format!(
+                    "{} left {} = {} (was {})",
+                    pass.name, a.0, a.1, b.1
+                ));
+            }
+        }
+    })
+    .unwrap_or_else(|e| panic!("{}: {e:#}", scene.name));
+    changed
+}

@@ -193,3 +193,57 @@ fn meshes_materials_parents_textures_light_types_and_the_light_grid_survive_save
     assert!(e.contains("light_grid.attenuation"), "{e}");
     assert_eq!(many.lights, before);
 }
+
+#[test]
+fn mirror_view_and_fragment_test_edits_survive_save_as() {
+    let ctx = common::context(common::backend());
+    let dir = std::env::temp_dir().join("gloss-save-mirror-views");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let root = common::root();
+    // A mirror's tint, reflectance and the infinite flag; a material's depth
+    // and alpha tests.
+    let mut scene = Scene::load(&root.join("scenes/mirror-normal-first.toml")).unwrap();
+    let m = scene
+        .objects
+        .iter()
+        .position(|o| o.mirror.is_some())
+        .unwrap();
+    let mirror = scene.objects[m].mirror.as_mut().unwrap();
+    mirror.tint = glam::Vec3::new(0.5, 0.8, 1.0);
+    mirror.reflectance = 0.6;
+    mirror.covered = true;
+    let mat = &mut scene.materials[1];
+    mat.depth_func = Some(gloss::scene::DepthFunc::Lequal);
+    mat.alpha_test = gloss::scene::AlphaTest::Gequal;
+    mat.alpha_ref = 0.25;
+    // Split views' rectangles.
+    let mut views = Scene::load(&root.join("scenes/viewports.toml")).unwrap();
+    views.views[0].viewport = [0.05, 0.55, 0.4, 0.4];
+    for (name, s) in [("mirror", &scene), ("views", &views)] {
+        let path = dir.join(format!("{name}.toml"));
+        s.save_as(&path).unwrap();
+        let mut again = Scene::load(&path).unwrap();
+        again.render.size = s.render.size;
+        assert_eq!(
+            again.objects.iter().map(|o| &o.mirror).collect::<Vec<_>>(),
+            s.objects.iter().map(|o| &o.mirror).collect::<Vec<_>>()
+        );
+        assert_eq!(again.materials, s.materials);
+        assert_eq!(again.views, s.views);
+        let a = render_scene(&ctx, s, Output::Srgb8).unwrap().read_image();
+        let b = render_scene(&ctx, &again, Output::Srgb8)
+            .unwrap()
+            .read_image();
+        common::assert_close(
+            &format!("save-{name}"),
+            &b,
+            &a,
+            &gloss::image_compare::Tolerance {
+                threshold: 1.0 / 255.0,
+                max_frac_over: 0.0,
+                max_abs: Some(1.0 / 255.0),
+            },
+        );
+    }
+}

@@ -5,7 +5,7 @@
 //! passes against the red pane's, in the forward and deferred paths.
 
 use crate::common;
-use gloss::renderer::{Output, Renderer};
+use gloss::renderer::Output;
 use gloss::scene::{DepthFunc, RenderPath, Scene};
 use std::path::Path;
 
@@ -88,8 +88,6 @@ fn every_depth_function_per_material_as_the_cpu_predicts() {
 #[test]
 fn per_material_depth_functions_leave_gl_less_behind() {
     let ctx = common::context(common::backend());
-    let gl = &ctx.gl;
-    let fresh = common::gl_state(gl);
     for path in [
         RenderPath::Forward,
         RenderPath::Deferred,
@@ -97,27 +95,7 @@ fn per_material_depth_functions_leave_gl_less_behind() {
     ] {
         let mut scene = panes(DepthFunc::Always);
         scene.render.path = path;
-        let mut r = Renderer::new(
-            gl,
-            &ctx.debug,
-            &scene,
-            &gloss::gl::program::Sources::Embedded,
-            48,
-            36,
-        )
-        .unwrap();
-        let mut changed = Vec::new();
-        r.render_inspected(&scene.camera, &mut |pass| {
-            for (b, a) in fresh.iter().zip(&common::gl_state(gl)) {
-                if b != a {
-                    changed.push(format!(
-                        "{} left {} = {} (was {})",
-                        pass.name, a.0, a.1, b.1
-                    ));
-                }
-            }
-        })
-        .unwrap();
+        let changed = common::state_left_changed(&ctx, &scene, 48, 36);
         assert!(changed.is_empty(), "{path:?}:\n  {}", changed.join("\n  "));
     }
 }

@@ -7,9 +7,8 @@
 //! Bound: at most 0.1% of a quarter's pixels over 1/255 and none over 3/255.
 
 use crate::common;
-use gloss::gl::program::Sources;
 use gloss::image_compare::Tolerance;
-use gloss::renderer::{Output, Renderer};
+use gloss::renderer::Output;
 use gloss::scene::{RenderPath, Scene};
 
 const EXACT: Tolerance = Tolerance {
@@ -106,8 +105,6 @@ fn the_plan_draws_the_world_once_per_view() {
 #[test]
 fn split_views_restore_the_scissor_test_in_every_path() {
     let ctx = common::context(common::backend());
-    let gl = &ctx.gl;
-    let fresh = common::gl_state(gl);
     for path in [
         RenderPath::Forward,
         RenderPath::Deferred,
@@ -116,19 +113,7 @@ fn split_views_restore_the_scissor_test_in_every_path() {
     ] {
         let mut scene = common::scene("viewports.toml");
         scene.render.path = path;
-        let mut r = Renderer::new(gl, &ctx.debug, &scene, &Sources::Embedded, 160, 90).unwrap();
-        let mut changed = Vec::new();
-        r.render_inspected(&scene.camera, &mut |pass| {
-            for (b, a) in fresh.iter().zip(&common::gl_state(gl)) {
-                if b != a {
-                    changed.push(format!(
-                        "{} left {} = {} (was {})",
-                        pass.name, a.0, a.1, b.1
-                    ));
-                }
-            }
-        })
-        .unwrap();
+        let changed = common::state_left_changed(&ctx, &scene, 160, 90);
         assert!(changed.is_empty(), "{path}:\n  {}", changed.join("\n  "));
     }
 }

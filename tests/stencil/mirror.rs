@@ -311,8 +311,6 @@ fn without_the_winding_fix_the_reflection_shows_back_faces() {
 #[test]
 fn every_mirror_pass_restores_the_gl_state() {
     let ctx = common::context(common::backend());
-    let gl = &ctx.gl;
-    let fresh = common::gl_state(gl);
     for name in [
         "mirror-normal-first.toml",
         "mirror-reflected-first.toml",
@@ -320,19 +318,7 @@ fn every_mirror_pass_restores_the_gl_state() {
     ] {
         let mut scene = common::scene(name);
         scene.render.size = (96, 54);
-        let mut r = Renderer::new(gl, &ctx.debug, &scene, &Sources::Embedded, 96, 54).unwrap();
-        let mut changed = Vec::new();
-        r.render_inspected(&scene.camera, &mut |pass| {
-            for (b, a) in fresh.iter().zip(&common::gl_state(gl)) {
-                if b != a {
-                    changed.push(format!(
-                        "{} left {} = {} (was {})",
-                        pass.name, a.0, a.1, b.1
-                    ));
-                }
-            }
-        })
-        .unwrap();
+        let changed = common::state_left_changed(&ctx, &scene, 96, 54);
         assert!(changed.is_empty(), "{name}:\n  {}", changed.join("\n  "));
     }
 }

@@ -35,6 +35,8 @@ pub enum Action {
     LightCount(usize),
     /// The scene's `[light_grid]`, edited.
     LightGrid(crate::scene::LightGrid),
+    /// The split views' rectangles, edited.
+    Views(Vec<crate::scene::SplitView>),
     /// Edited lights (all of them, in the scene's order).
     Lights(Vec<Light>),
     /// Edited materials (all of them).
@@ -204,6 +206,9 @@ impl PanelState {
                 }
                 if let Some(o) = values::objects(ui, input.scene) {
                     actions.push(Action::Objects(o));
+                }
+                if let Some(v) = values::views(ui, input.scene) {
+                    actions.push(Action::Views(v));
                 }
                 if let Some(c) = values::camera(ui, &input.scene.camera) {
                     actions.push(Action::Camera(c));

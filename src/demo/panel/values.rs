@@ -5,7 +5,10 @@
 //! transform, mesh, material and parent; the camera's lens.
 
 use crate::assets;
-use crate::scene::{Camera, LightGrid, LightKind, Material, MeshSource, Object, Projection, Scene};
+use crate::scene::{
+    AlphaTest, Camera, DepthFunc, LightGrid, LightKind, Material, MeshSource, Object, Projection,
+    Scene, SplitView,
+};
 use glam::Vec3;
 use std::path::PathBuf;
 
@@ -112,6 +115,7 @@ pub fn materials(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::M
                         // Below 1 the transparency pass draws it (notes 01 §4.5).
                         changed |= number(ui, "opacity", &mut m.opacity, 0.0..=1.0);
                         changed |= texture(ui, scene, i, m);
+                        changed |= material_tests(ui, i, m);
                     });
             }
         });
@@ -155,6 +159,17 @@ pub fn objects(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<Object>> {
                         changed |= vec3(ui, "position", &mut o.position, -1e4..=1e4);
                         changed |= vec3(ui, "rotation (degrees)", &mut o.rotation, -360.0..=360.0);
                         changed |= vec3(ui, "scale", &mut o.scale, -100.0..=100.0);
+                        if let Some(m) = &mut o.mirror {
+                            changed |= vec3(ui, "mirror tint", &mut m.tint, 0.0..=1.0);
+                            changed |= number(ui, "reflectance", &mut m.reflectance, 0.0..=1.0);
+                            changed |= ui
+                                .checkbox(&mut m.infinite, "infinite (no stencil pass)")
+                                .changed();
+                            changed |= ui.checkbox(&mut m.covered, "covered by a wall").changed();
+                            if m.infinite && m.covered {
+                                m.covered = false;
+                            }
+                        }
                     });
             }
             egui::CollapsingHeader::new("mesh, material, parent")
@@ -319,4 +334,56 @@ pub fn texture(ui: &mut egui::Ui, scene: &Scene, i: usize, m: &mut Material) -> 
         return true;
     }
     false
+}
+
+/// A material's own depth test and alpha test (notes 05, "Fragment
+/// Tests"); true when one changed.
+fn material_tests(ui: &mut egui::Ui, i: usize, m: &mut Material) -> bool {
+    let mut changed = false;
+    let mut depth: Vec<String> = vec!["(render's)".into()];
+    depth.extend(DepthFunc::WORDS.iter().map(|w| w.to_string()));
+    let mut d = m
+        .depth_func
+        .and_then(|f| DepthFunc::ALL.iter().position(|&x| x == f))
+        .map_or(0, |k| k + 1);
+    if choose(ui, "depth test", ("depth test", i), &depth, &mut d) {
+        m.depth_func = d.checked_sub(1).map(|k| DepthFunc::ALL[k]);
+        changed = true;
+    }
+    let alpha: Vec<String> = AlphaTest::WORDS.iter().map(|w| w.to_string()).collect();
+    let mut a = AlphaTest::ALL
+        .iter()
+        .position(|&x| x == m.alpha_test)
+        .unwrap_or(0);
+    if choose(ui, "alpha test", ("alpha test", i), &alpha, &mut a) {
+        m.alpha_test = AlphaTest::ALL[a];
+        changed = true;
+    }
+    changed |= number(ui, "alpha reference", &mut m.alpha_ref, 0.0..=1.0);
+    changed
+}
+
+/// Each split view's rectangle (fractions of the frame, y up); Some(new
+/// views) when one changed.
+pub fn views(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<SplitView>> {
+    if scene.views.is_empty() {
+        return None;
+    }
+    let mut views = scene.views.clone();
+    let mut changed = false;
+    egui::CollapsingHeader::new(format!("Views ({})", views.len()))
+        .default_open(false)
+        .show(ui, |ui| {
+            for v in &mut views {
+                ui.horizontal(|ui| {
+                    ui.label(format!("{}: x y w h", v.name));
+                    for c in &mut v.viewport {
+                        changed |= ui
+                            .add(egui::DragValue::new(c).range(0.0..=1.0).speed(0.005))
+                            .changed();
+                    }
+                });
+            }
+        });
+    changed.then_some(views)
 }

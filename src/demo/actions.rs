@@ -25,6 +25,7 @@ impl Demo {
                 | Action::LightCount(_)
                 | Action::LightGrid(_)
                 | Action::Views(_)
+                | Action::Billboards(..)
                 | Action::Lights(_)
                 | Action::Materials(_)
                 | Action::Objects(_)
@@ -68,6 +69,13 @@ impl Demo {
                 } else {
                     self.set_values(scene)
                 }
+            }
+            Action::Billboards(list, fields) => {
+                // Their number may change: a new renderer (instance buffer).
+                let mut scene = self.scene.clone();
+                scene
+                    .set_billboards(list, fields)
+                    .and_then(|()| self.rebuild(&scene).map(|()| self.scene = scene))
             }
             Action::Views(views) => views
                 .iter()

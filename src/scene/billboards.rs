@@ -33,34 +33,36 @@ use std::path::{Path, PathBuf};
 /// The most billboards a scene may have (lists and fields together).
 pub const MAX_BILLBOARDS: usize = 100_000;
 
-#[derive(Deserialize, Debug)]
+/// One `[[billboards]]` entry, as written (the sprite relative to the file).
+#[derive(Deserialize, serde::Serialize, Debug, Clone, PartialEq)]
 #[serde(deny_unknown_fields)]
-pub(super) struct BillboardFile {
-    pub(super) sprite: String,
-    pub(super) center: [f32; 3],
-    pub(super) size: [f32; 2],
+pub struct BillboardFile {
+    pub sprite: String,
+    pub center: [f32; 3],
+    pub size: [f32; 2],
     #[serde(default = "spherical")]
-    pub(super) kind: BillboardKind,
+    pub kind: BillboardKind,
 }
 
-#[derive(Deserialize, Debug)]
+/// One `[[billboard_fields]]` entry, as written.
+#[derive(Deserialize, serde::Serialize, Debug, Clone, PartialEq)]
 #[serde(deny_unknown_fields)]
-pub(super) struct BillboardFieldFile {
-    pub(super) sprite: String,
+pub struct BillboardFieldFile {
+    pub sprite: String,
     #[serde(default = "cylindrical")]
-    pub(super) kind: BillboardKind,
-    pub(super) count: usize,
+    pub kind: BillboardKind,
+    pub count: usize,
     #[serde(default = "one_u64")]
-    pub(super) seed: u64,
+    pub seed: u64,
     /// [xmin, xmax, zmin, zmax]
-    pub(super) area: [f32; 4],
+    pub area: [f32; 4],
     #[serde(default)]
-    pub(super) ground: f32,
+    pub ground: f32,
     /// [min, max] height.
-    pub(super) height: [f32; 2],
+    pub height: [f32; 2],
     /// width / height
     #[serde(default = "one")]
-    pub(super) aspect: f32,
+    pub aspect: f32,
 }
 
 fn spherical() -> BillboardKind {
@@ -89,6 +91,31 @@ pub struct Billboard {
 /// The sprites (PNG paths, each once, in order of first use) and the
 /// billboards: the `[[billboards]]` list, then each field's, in file order.
 pub(super) fn billboards(f: &SceneFile, base: &Path) -> Result<(Vec<PathBuf>, Vec<Billboard>)> {
+    expand(&f.billboards, &f.billboard_fields, base)
+}
+
+impl super::Scene {
+    /// Take new `[[billboards]]` and `[[billboard_fields]]` (the demo edits
+    /// them), checked as the loader checks them; on an error nothing changes.
+    pub fn set_billboards(
+        &mut self,
+        list: Vec<BillboardFile>,
+        fields: Vec<BillboardFieldFile>,
+    ) -> Result<()> {
+        let base = self.path.parent().unwrap_or(Path::new("."));
+        let (sprites, billboards) = expand(&list, &fields, base)?;
+        (self.sprites, self.billboards) = (sprites, billboards);
+        (self.billboard_list, self.billboard_fields) = (list, fields);
+        Ok(())
+    }
+}
+
+/// The sprites and billboards of a list and fields (sprites relative to `base`).
+fn expand(
+    list: &[BillboardFile],
+    fields: &[BillboardFieldFile],
+    base: &Path,
+) -> Result<(Vec<PathBuf>, Vec<Billboard>)> {
     let mut sprites: Vec<PathBuf> = Vec::new();
     let mut sprite_index = |key: &str, written: &str| -> Result<usize> {
         let p = super::resolve::relative_to(base, written);
@@ -104,8 +131,8 @@ pub(super) fn billboards(f: &SceneFile, base: &Path) -> Result<(Vec<PathBuf>, Ve
         sprites.push(p);
         Ok(sprites.len() - 1)
     };
-    let total: usize = f.billboards.len()
-        + f.billboard_fields
+    let total: usize = list.len()
+        + fields
             .iter()
             .map(|g| g.count)
             .fold(0, usize::saturating_add);
@@ -113,7 +140,7 @@ pub(super) fn billboards(f: &SceneFile, base: &Path) -> Result<(Vec<PathBuf>, Ve
         bail!("billboards: at most {MAX_BILLBOARDS} billboards in a scene, found {total}");
     }
     let mut out = Vec::with_capacity(total);
-    for (i, b) in f.billboards.iter().enumerate() {
+    for (i, b) in list.iter().enumerate() {
         let key = |k: &str| format!("billboards[{i}].{k}");
         finite(&key("center"), &b.center)?;
         positive(&key("size"), &b.size)?;
@@ -124,7 +151,7 @@ pub(super) fn billboards(f: &SceneFile, base: &Path) -> Result<(Vec<PathBuf>, Ve
             kind: b.kind,
         });
     }
-    for (i, g) in f.billboard_fields.iter().enumerate() {
+    for (i, g) in fields.iter().enumerate() {
         let key = |k: &str| format!("billboard_fields[{i}].{k}");
         let [x0, x1, z0, z1] = g.area;
         finite(&key("area"), &g.area)?;

@@ -22,7 +22,7 @@ mod settings;
 mod views;
 
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
-pub use billboards::{Billboard, MAX_BILLBOARDS};
+pub use billboards::{Billboard, BillboardFieldFile, BillboardFile, MAX_BILLBOARDS};
 pub use file::LightGrid;
 pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
@@ -248,6 +248,10 @@ pub struct Scene {
     /// Billboard sprites (RGBA PNGs), each once, and the billboards (notes 05).
     pub sprites: Vec<PathBuf>,
     pub billboards: Vec<Billboard>,
+    /// The `[[billboards]]` and `[[billboard_fields]]` they came from, as
+    /// written (`set_billboards` makes `billboards` again).
+    pub billboard_list: Vec<BillboardFile>,
+    pub billboard_fields: Vec<BillboardFieldFile>,
 }
 
 impl Scene {

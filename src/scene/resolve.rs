@@ -81,6 +81,8 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         objects,
         sprites,
         billboards,
+        billboard_list: f.billboards.clone(),
+        billboard_fields: f.billboard_fields.clone(),
     })
 }
 

@@ -111,6 +111,19 @@ impl Scene {
                 }
             }
         }
+        // The billboards and billboard fields, as they are now.
+        for (key, list) in [
+            ("billboards", toml::Value::try_from(&self.billboard_list)),
+            (
+                "billboard_fields",
+                toml::Value::try_from(&self.billboard_fields),
+            ),
+        ] {
+            match list.context("writing the billboards")? {
+                toml::Value::Array(a) if a.is_empty() => table.remove(key),
+                v => table.insert(key.into(), v),
+            };
+        }
         // The split views' rectangles, as they are now.
         if let Some(views) = table.get_mut("views").and_then(toml::Value::as_array_mut) {
             for (t, v) in views.iter_mut().zip(&self.views) {

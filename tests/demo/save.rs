@@ -247,3 +247,54 @@ fn mirror_view_and_fragment_test_edits_survive_save_as() {
         );
     }
 }
+
+#[test]
+fn billboard_edits_survive_save_as() {
+    let ctx = common::context(common::backend());
+    let dir = std::env::temp_dir().join("gloss-save-billboards");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut scene = Scene::load(&common::root().join("scenes/billboards-forest.toml")).unwrap();
+    let before = scene.billboards.len();
+    let (mut list, mut fields) = (scene.billboard_list.clone(), scene.billboard_fields.clone());
+    assert!(!fields.is_empty());
+    fields[0].count += 25;
+    fields[0].seed = 99;
+    fields[0].height = [0.8, 1.6];
+    if let Some(b) = list.first_mut() {
+        b.center[0] += 0.5;
+        b.kind = gloss::scene::BillboardKind::Spherical;
+    }
+    scene.set_billboards(list, fields).unwrap();
+    assert_eq!(scene.billboards.len(), before + 25);
+    // A field that breaks a rule is refused, and the scene keeps its billboards.
+    let mut bad = scene.billboard_fields.clone();
+    bad[0].height = [2.0, 1.0];
+    let e = scene
+        .set_billboards(scene.billboard_list.clone(), bad)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("billboard_fields[0].height"), "{e}");
+    assert_eq!(scene.billboards.len(), before + 25);
+    let path = dir.join("forest.toml");
+    scene.save_as(&path).unwrap();
+    let mut again = Scene::load(&path).unwrap();
+    again.render.size = scene.render.size;
+    assert_eq!(again.billboards, scene.billboards);
+    let a = render_scene(&ctx, &scene, Output::Srgb8)
+        .unwrap()
+        .read_image();
+    let b = render_scene(&ctx, &again, Output::Srgb8)
+        .unwrap()
+        .read_image();
+    common::assert_close(
+        "save-billboards",
+        &b,
+        &a,
+        &gloss::image_compare::Tolerance {
+            threshold: 1.0 / 255.0,
+            max_frac_over: 0.0,
+            max_abs: Some(1.0 / 255.0),
+        },
+    );
+}

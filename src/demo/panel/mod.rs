@@ -9,6 +9,7 @@
 //! appears here through its one registration.
 
 mod knob;
+mod structure;
 mod timings;
 mod values;
 
@@ -35,6 +36,11 @@ pub enum Action {
     LightCount(usize),
     /// The scene's `[light_grid]`, edited.
     LightGrid(crate::scene::LightGrid),
+    /// The billboards list and fields, edited.
+    Billboards(
+        Vec<crate::scene::BillboardFile>,
+        Vec<crate::scene::BillboardFieldFile>,
+    ),
     /// The split views' rectangles, edited.
     Views(Vec<crate::scene::SplitView>),
     /// Edited lights (all of them, in the scene's order).
@@ -207,7 +213,10 @@ impl PanelState {
                 if let Some(o) = values::objects(ui, input.scene) {
                     actions.push(Action::Objects(o));
                 }
-                if let Some(v) = values::views(ui, input.scene) {
+                if let Some((list, fields)) = structure::billboards(ui, input.scene) {
+                    actions.push(Action::Billboards(list, fields));
+                }
+                if let Some(v) = structure::views(ui, input.scene) {
                     actions.push(Action::Views(v));
                 }
                 if let Some(c) = values::camera(ui, &input.scene.camera) {

@@ -4,15 +4,11 @@
 //! specular colours, shininess, opacity and texture; each object's
 //! transform, mesh, material and parent; the camera's lens.
 
-use crate::assets;
-use crate::scene::{
-    AlphaTest, Camera, DepthFunc, LightGrid, LightKind, Material, MeshSource, Object, Projection,
-    Scene, SplitView,
-};
+use super::structure;
+use crate::scene::{Camera, LightGrid, LightKind, Object, Projection, Scene};
 use glam::Vec3;
-use std::path::PathBuf;
 
-fn vec3(
+pub(super) fn vec3(
     ui: &mut egui::Ui,
     label: &str,
     v: &mut Vec3,
@@ -31,7 +27,7 @@ fn vec3(
     .inner
 }
 
-fn number(
+pub(super) fn number(
     ui: &mut egui::Ui,
     label: &str,
     v: &mut f32,
@@ -114,8 +110,8 @@ pub fn materials(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::M
                         changed |= number(ui, "shininess", &mut m.shininess, 1.0..=4096.0);
                         // Below 1 the transparency pass draws it (notes 01 §4.5).
                         changed |= number(ui, "opacity", &mut m.opacity, 0.0..=1.0);
-                        changed |= texture(ui, scene, i, m);
-                        changed |= material_tests(ui, i, m);
+                        changed |= structure::texture(ui, scene, i, m);
+                        changed |= structure::material_tests(ui, i, m);
                     });
             }
         });
@@ -175,7 +171,7 @@ pub fn objects(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<Object>> {
             egui::CollapsingHeader::new("mesh, material, parent")
                 .id_salt("object structure")
                 .show(ui, |ui| {
-                    changed |= object_structure(ui, scene, &mut objects);
+                    changed |= structure::object_structure(ui, scene, &mut objects);
                 });
         });
     changed.then_some(objects)
@@ -213,177 +209,4 @@ pub fn light_grid(ui: &mut egui::Ui, scene: &Scene) -> Option<LightGrid> {
             }
         });
     changed.then_some(g)
-}
-
-/// A choice among `names` (index `i`); true when it changed.
-fn choose(
-    ui: &mut egui::Ui,
-    label: &str,
-    salt: (&str, usize),
-    names: &[String],
-    i: &mut usize,
-) -> bool {
-    let before = *i;
-    ui.horizontal(|ui| {
-        ui.label(label);
-        egui::ComboBox::from_id_salt(salt)
-            .selected_text(names.get(*i).map_or("?", String::as_str))
-            .show_ui(ui, |ui| {
-                for (j, n) in names.iter().enumerate() {
-                    ui.selectable_value(i, j, n);
-                }
-            });
-    });
-    *i != before
-}
-
-/// The name a mesh goes by in the panel.
-fn mesh_name(m: &MeshSource) -> String {
-    match m {
-        MeshSource::Obj(p) => p.file_name().map_or_else(
-            || p.display().to_string(),
-            |n| n.to_string_lossy().into_owned(),
-        ),
-        other => format!("{other:?}").to_lowercase(),
-    }
-}
-
-/// What an object can be made of: the built-in meshes, the scene's OBJ
-/// files and those in the assets folder beside the scene.
-fn mesh_choices(scene: &Scene) -> Vec<MeshSource> {
-    use MeshSource::*;
-    let mut v = vec![Sphere, Icosphere, Cube, Plane, Cylinder, Cone, Torus];
-    let objs = scene.objects.iter().map(|o| o.mesh.clone());
-    let files = assets::assets_beside(&scene.path, "obj")
-        .into_iter()
-        .map(Obj);
-    for m in objs.chain(files) {
-        if !v.contains(&m) {
-            v.push(m);
-        }
-    }
-    v
-}
-
-/// Each object's mesh, material and parent; Some(new objects) when one
-/// changed (the demo builds a new renderer: a mesh may need uploading).
-pub fn object_structure(ui: &mut egui::Ui, scene: &Scene, objects: &mut [Object]) -> bool {
-    let meshes = mesh_choices(scene);
-    let mesh_names: Vec<String> = meshes.iter().map(mesh_name).collect();
-    let materials: Vec<String> = scene.materials.iter().map(|m| m.name.clone()).collect();
-    let mut parents: Vec<String> = vec!["(none)".into()];
-    parents.extend(scene.objects.iter().map(|o| o.name.clone()));
-    let mut changed = false;
-    for (i, o) in objects.iter_mut().enumerate() {
-        ui.push_id(("structure", i), |ui| {
-            ui.label(&o.name);
-            if o.mirror.is_some() {
-                ui.label("  a mirror: its mesh stays (it must be flat, or a sphere)");
-            } else {
-                let mut m = meshes.iter().position(|x| *x == o.mesh).unwrap_or(0);
-                if choose(ui, "  mesh", ("mesh", i), &mesh_names, &mut m) {
-                    o.mesh = meshes[m].clone();
-                    changed = true;
-                }
-            }
-            changed |= choose(
-                ui,
-                "  material",
-                ("material", i),
-                &materials,
-                &mut o.material,
-            );
-            let mut p = o.parent.map_or(0, |p| p + 1);
-            if choose(ui, "  parent", ("parent", i), &parents, &mut p) {
-                o.parent = p.checked_sub(1);
-                changed = true;
-            }
-        });
-    }
-    changed
-}
-
-/// A material's diffuse texture among the scene's textures and the PNGs
-/// beside it; true when it changed.
-pub fn texture(ui: &mut egui::Ui, scene: &Scene, i: usize, m: &mut Material) -> bool {
-    let mut choices: Vec<Option<PathBuf>> = vec![None];
-    let used = scene
-        .materials
-        .iter()
-        .filter_map(|m| m.diffuse_texture.clone());
-    for p in used.chain(assets::assets_beside(&scene.path, "png")) {
-        if !choices.contains(&Some(p.clone())) {
-            choices.push(Some(p));
-        }
-    }
-    let names: Vec<String> = choices
-        .iter()
-        .map(|c| match c {
-            None => "(none)".to_string(),
-            Some(p) => p
-                .file_name()
-                .map_or_else(|| p.display().to_string(), |n| n.to_string_lossy().into()),
-        })
-        .collect();
-    let mut k = choices
-        .iter()
-        .position(|c| *c == m.diffuse_texture)
-        .unwrap_or(0);
-    if choose(ui, "texture", ("texture", i), &names, &mut k) {
-        m.diffuse_texture = choices[k].clone();
-        return true;
-    }
-    false
-}
-
-/// A material's own depth test and alpha test (notes 05, "Fragment
-/// Tests"); true when one changed.
-fn material_tests(ui: &mut egui::Ui, i: usize, m: &mut Material) -> bool {
-    let mut changed = false;
-    let mut depth: Vec<String> = vec!["(render's)".into()];
-    depth.extend(DepthFunc::WORDS.iter().map(|w| w.to_string()));
-    let mut d = m
-        .depth_func
-        .and_then(|f| DepthFunc::ALL.iter().position(|&x| x == f))
-        .map_or(0, |k| k + 1);
-    if choose(ui, "depth test", ("depth test", i), &depth, &mut d) {
-        m.depth_func = d.checked_sub(1).map(|k| DepthFunc::ALL[k]);
-        changed = true;
-    }
-    let alpha: Vec<String> = AlphaTest::WORDS.iter().map(|w| w.to_string()).collect();
-    let mut a = AlphaTest::ALL
-        .iter()
-        .position(|&x| x == m.alpha_test)
-        .unwrap_or(0);
-    if choose(ui, "alpha test", ("alpha test", i), &alpha, &mut a) {
-        m.alpha_test = AlphaTest::ALL[a];
-        changed = true;
-    }
-    changed |= number(ui, "alpha reference", &mut m.alpha_ref, 0.0..=1.0);
-    changed
-}
-
-/// Each split view's rectangle (fractions of the frame, y up); Some(new
-/// views) when one changed.
-pub fn views(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<SplitView>> {
-    if scene.views.is_empty() {
-        return None;
-    }
-    let mut views = scene.views.clone();
-    let mut changed = false;
-    egui::CollapsingHeader::new(format!("Views ({})", views.len()))
-        .default_open(false)
-        .show(ui, |ui| {
-            for v in &mut views {
-                ui.horizontal(|ui| {
-                    ui.label(format!("{}: x y w h", v.name));
-                    for c in &mut v.viewport {
-                        changed |= ui
-                            .add(egui::DragValue::new(c).range(0.0..=1.0).speed(0.005))
-                            .changed();
-                    }
-                });
-            }
-        });
-    changed.then_some(views)
 }

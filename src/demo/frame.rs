@@ -127,8 +127,17 @@ impl Demo {
         let Some(run) = self.running.as_mut() else {
             return Ok(false);
         };
-        // 3. The panel (with the inspector's thumbnails), then the state
-        //    egui leaves behind put back.
+        // 3. The panel (with the inspector's thumbnails), drawn into its
+        //    layer when due (src/demo/panel_layer.rs), then the state egui
+        //    leaves behind put back; the layer laid over the frame.
+        let (lw, lh) = (to_i32(w), to_i32(h));
+        if !run.panel_layer.due(lw, lh) && run.screenshot != Some(true) {
+            run.panel_layer.composite(&run.ctx.gl, lw, lh);
+            run.ctx
+                .debug
+                .check(&run.ctx.gl, "laying the panel over the frame")?;
+            return self.finish_frame();
+        }
         if run.panel.open && run.panel.thumbnails {
             run.thumbnails.update(
                 &run.ctx.gl,
@@ -163,14 +172,31 @@ impl Demo {
         let panel = &mut run.panel;
         run.egui
             .run(&run.ctx.window, |ui| actions = panel.show(ui, &input));
+        let used = run.egui.egui_ctx.globally_used_rect();
+        let ppp = run.egui.egui_ctx.pixels_per_point();
+        run.panel_layer.set_area(used, ppp, lh);
+        run.panel_layer.begin(&run.ctx.gl, lw, lh)?;
         run.egui.paint(&run.ctx.window);
         present::restore_after_egui(&run.ctx.gl);
+        // An action changes what the panel shows: draw it again next frame.
+        if !actions.is_empty() {
+            run.panel_layer.stale = true;
+        }
+        run.panel_layer.composite(&run.ctx.gl, lw, lh);
         run.ctx.debug.check(&run.ctx.gl, "drawing the panel")?;
         if run.screenshot == Some(true) {
             run.screenshot = None;
             let shot = screenshot::save(&run.ctx.gl, w, h);
             self.note_screenshot(shot);
         }
+        for a in actions {
+            self.apply(a);
+        }
+        self.finish_frame()
+    }
+
+    /// Swap, count the frame, update the title; true when the demo should stop.
+    fn finish_frame(&mut self) -> Result<bool> {
         let Some(run) = self.running.as_mut() else {
             return Ok(false);
         };
@@ -189,11 +215,7 @@ impl Demo {
                 1000.0 / ms.max(1e-3)
             ));
         }
-        let stop = self.options.frames.is_some_and(|n| run.frames >= n);
-        for a in actions {
-            self.apply(a);
-        }
-        Ok(stop)
+        Ok(self.options.frames.is_some_and(|n| run.frames >= n))
     }
 
     pub(super) fn note_screenshot(&mut self, shot: Result<PathBuf>) {

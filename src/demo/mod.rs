@@ -18,6 +18,7 @@ pub mod inspector;
 mod keys;
 mod orbit;
 pub mod panel;
+mod panel_layer;
 mod present;
 
 pub use present::restore_after_egui;
@@ -126,6 +127,8 @@ struct Running {
     comparison: Option<compare::Comparison>,
     /// What the inspector draws into (never one of the renderer's targets).
     inspect_fb: Option<Framebuffer>,
+    /// The panel, drawn when due and laid over every frame.
+    panel_layer: panel_layer::PanelLayer,
     ctx: WindowContext,
     /// What the panel lists and names, found once: the shipped scenes, the GL.
     shipped: Vec<String>,
@@ -195,6 +198,7 @@ impl Demo {
             comparison: None,
             thumbnails: thumbnails::Thumbnails::new(),
             inspect_fb: None,
+            panel_layer: panel_layer::PanelLayer::new(&ctx.gl, &self.sources)?,
             shipped: crate::assets::shipped_scenes(),
             gl_info: format!(
                 "{} — OpenGL {}.{} core",
@@ -227,6 +231,10 @@ impl Demo {
             return Ok(());
         };
         let to_egui = run.egui.on_window_event(&run.ctx.window, &event);
+        // What egui sees, and any key (Tab, F1, a setting), shows in the panel.
+        if to_egui.repaint || matches!(event, WindowEvent::KeyboardInput { .. }) {
+            run.panel_layer.stale = true;
+        }
         match event {
             WindowEvent::CloseRequested | WindowEvent::Destroyed => event_loop.exit(),
             // A zero size (minimised) keeps the old size until the window comes back.

@@ -28,6 +28,7 @@
 //! z, y→z about x, z→x about y), as glam's `Mat4::from_rotation_*` do.
 
 pub mod reflection;
+pub mod shadow;
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 

@@ -26,7 +26,7 @@ pub struct DrawItem {
     pub model: Mat4,
     pub normal_matrix: Mat3,
     /// The model matrix mirrors (negative determinant): its triangles wind
-    /// clockwise on screen, so a pass draws it with glFrontFace(GL_CW).
+    /// clockwise on screen; `View::front_face` gives the pass its glFrontFace.
     pub mirrored: bool,
     pub diffuse: Vec3,
     pub specular: Vec3,
@@ -49,13 +49,6 @@ pub struct DrawItem {
     /// The centre of the mesh's bounding box, in its own space (the
     /// transparency pass sorts by the view depth of `model * centre`).
     pub centre: Vec3,
-}
-
-impl DrawItem {
-    /// The winding of this object's front faces: GL_CW for a mirroring model matrix.
-    pub fn front_face(&self) -> u32 {
-        if self.mirrored { glow::CW } else { glow::CCW }
-    }
 }
 
 /// Every object of the scene, with the meshes and textures they share.
@@ -183,12 +176,7 @@ impl DrawList {
 pub fn normal_matrix(model: &Mat4) -> Mat3 {
     match math::normal_matrix(model) {
         Some(n) => n,
-        None => {
-            let m = Mat3::from_mat4(*model);
-            let (c0, c1, c2) = (m.x_axis, m.y_axis, m.z_axis);
-            // cofactor(M) has columns c1 x c2, c2 x c0, c0 x c1.
-            Mat3::from_cols(c1.cross(c2), c2.cross(c0), c0.cross(c1))
-        }
+        None => math::cofactor(model),
     }
 }
 

@@ -204,6 +204,16 @@ pub fn perspective_divide(v: Vec4) -> Vec3 {
     Vec3::new(v.x / v.w, v.y / v.w, v.z / v.w)
 }
 
+/// The cofactor matrix of `m`'s upper 3x3, det x inverse-transpose: its
+/// columns are c1 x c2, c2 x c0, c0 x c1. It carries normals like the normal
+/// matrix (up to the determinant's scale and sign) and stays defined when
+/// `m` is singular, where it gives a flattened surface's normal.
+pub fn cofactor(m: &Mat4) -> Mat3 {
+    let m = Mat3::from_mat4(*m);
+    let (c0, c1, c2) = (m.x_axis, m.y_axis, m.z_axis);
+    Mat3::from_cols(c1.cross(c2), c2.cross(c0), c0.cross(c1))
+}
+
 /// §8.1.1 Normal matrix: the transpose of the inverse of the model matrix's
 /// upper-left 3x3, `transpose(inverse(mat3(model)))` in the notes' GLSL.
 /// Normals transformed by it stay perpendicular to transformed surface

@@ -80,12 +80,7 @@ impl Object {
         let point = self.model.transform_point3(m.local_point);
         // Normals go through the normal matrix (its cofactor form also
         // copes with a scale of 0 along the plane).
-        let linear = Mat3::from_mat4(self.model);
-        let cofactor = Mat3::from_cols(
-            linear.y_axis.cross(linear.z_axis),
-            linear.z_axis.cross(linear.x_axis),
-            linear.x_axis.cross(linear.y_axis),
-        );
+        let cofactor = math::cofactor(&self.model);
         if m.curved {
             return None;
         }

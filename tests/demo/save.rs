@@ -7,6 +7,13 @@ use gloss::renderer::{Output, render_scene};
 use gloss::scene::knobs::{self, Value};
 use gloss::scene::{Accumulation, Scene};
 
+/// A saved scene reloads to the same image: no channel off by more than one step.
+const EXACT: gloss::image_compare::Tolerance = gloss::image_compare::Tolerance {
+    threshold: 1.0 / 255.0,
+    max_frac_over: 0.0,
+    max_abs: Some(1.0 / 255.0),
+};
+
 #[test]
 fn a_saved_scene_loads_to_the_same_image() {
     let ctx = common::context(common::backend());
@@ -161,16 +168,7 @@ fn meshes_materials_parents_textures_light_types_and_the_light_grid_survive_save
     let saved = render_scene(&ctx, &again, Output::Srgb8)
         .unwrap()
         .read_image();
-    common::assert_close(
-        "save-structure",
-        &saved,
-        &edited,
-        &gloss::image_compare::Tolerance {
-            threshold: 1.0 / 255.0,
-            max_frac_over: 0.0,
-            max_abs: Some(1.0 / 255.0),
-        },
-    );
+    common::assert_close("save-structure", &saved, &edited, &EXACT);
 
     // The light grid's parameters, not only its count.
     let mut many = Scene::load(&root.join("scenes/many-lights.toml")).unwrap();
@@ -235,16 +233,7 @@ fn mirror_view_and_fragment_test_edits_survive_save_as() {
         let b = render_scene(&ctx, &again, Output::Srgb8)
             .unwrap()
             .read_image();
-        common::assert_close(
-            &format!("save-{name}"),
-            &b,
-            &a,
-            &gloss::image_compare::Tolerance {
-                threshold: 1.0 / 255.0,
-                max_frac_over: 0.0,
-                max_abs: Some(1.0 / 255.0),
-            },
-        );
+        common::assert_close(&format!("save-{name}"), &b, &a, &EXACT);
     }
 }
 
@@ -287,14 +276,5 @@ fn billboard_edits_survive_save_as() {
     let b = render_scene(&ctx, &again, Output::Srgb8)
         .unwrap()
         .read_image();
-    common::assert_close(
-        "save-billboards",
-        &b,
-        &a,
-        &gloss::image_compare::Tolerance {
-            threshold: 1.0 / 255.0,
-            max_frac_over: 0.0,
-            max_abs: Some(1.0 / 255.0),
-        },
-    );
+    common::assert_close("save-billboards", &b, &a, &EXACT);
 }

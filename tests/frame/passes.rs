@@ -7,17 +7,14 @@ use crate::common;
 use gloss::gl::framebuffer::Framebuffer;
 use gloss::gl::mesh::Mesh;
 use gloss::gl::program::{Program, Sources};
-use gloss::renderer::Renderer;
 use gloss::scene::RenderPath;
 use glow::HasContext;
 
 #[test]
 fn every_pass_restores_the_gl_state_it_changed() {
     let ctx = common::context(common::backend());
-    let gl = &ctx.gl;
     let base = common::scene("mixed-lights.toml");
-    // The state of a fresh context: every pass must leave it so.
-    let fresh = common::gl_state(gl);
+    // Every pass must leave the state of a fresh context.
     for (path, stencil) in [
         (RenderPath::Forward, false),
         (RenderPath::Deferred, false),
@@ -28,21 +25,7 @@ fn every_pass_restores_the_gl_state_it_changed() {
         let mut scene = base.clone();
         scene.render.path = path;
         scene.render.stencil_volumes = stencil;
-        let mut r = Renderer::new(gl, &ctx.debug, &scene, &Sources::Embedded, 96, 54).unwrap();
-        let before = &fresh;
-        let mut changed = Vec::new();
-        r.render_inspected(&scene.camera, &mut |pass| {
-            let after = common::gl_state(gl);
-            for (b, a) in before.iter().zip(&after) {
-                if b != a {
-                    changed.push(format!(
-                        "{} left {} = {} (was {})",
-                        pass.name, a.0, a.1, b.1
-                    ));
-                }
-            }
-        })
-        .unwrap();
+        let changed = common::state_left_changed(&ctx, &scene, 96, 54);
         assert!(
             changed.is_empty(),
             "{path:?} (stencil {stencil}):\n  {}",

@@ -12,7 +12,6 @@ use gloss::gl::program::Sources;
 use gloss::image_compare::compare_rgba8;
 use gloss::renderer::Renderer;
 use gloss::scene::{MirrorOrder, RenderPath, Scene};
-use glow::HasContext;
 use image::RgbaImage;
 
 const THRESHOLD: f64 = 3.0 / 255.0;
@@ -28,26 +27,6 @@ struct Captured {
     width: usize,
 }
 
-fn read_stencil(gl: &glow::Context, fb: glow::Framebuffer, w: i32, h: i32) -> Vec<u8> {
-    let mut raw = vec![0u8; (w * h) as usize];
-    unsafe {
-        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(fb));
-        gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
-        gl.read_pixels(
-            0,
-            0,
-            w,
-            h,
-            glow::STENCIL_INDEX,
-            glow::UNSIGNED_BYTE,
-            glow::PixelPackData::Slice(Some(&mut raw)),
-        );
-        gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
-        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
-    }
-    raw.chunks(w as usize).rev().flatten().copied().collect()
-}
-
 fn capture(ctx: &gloss::gl::Headless, scene: &Scene) -> Captured {
     let (w, h) = (scene.render.size.0 as i32, scene.render.size.1 as i32);
     let mut r = Renderer::new(&ctx.gl, &ctx.debug, scene, &Sources::Embedded, w, h).unwrap();
@@ -57,7 +36,7 @@ fn capture(ctx: &gloss::gl::Headless, scene: &Scene) -> Captured {
         stencils.push((
             pass.name.to_string(),
             pass.view,
-            read_stencil(&ctx.gl, fb, w, h),
+            gloss::gl::framebuffer::read_stencil_top_down(&ctx.gl, fb, w, h),
         ))
     })
     .unwrap_or_else(|e| panic!("{}: {e:#}", scene.name));

@@ -4,6 +4,7 @@
 // opacity; glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) mixes it with
 // what lies behind: C = C_source * alpha + C_dest * (1 - alpha).
 #include "common/lighting.glsl"
+#include "common/shadow.glsl"
 #include "common/normals.glsl"
 #include "common/material.glsl"
 #include "common/lighting_output.glsl"
@@ -27,7 +28,9 @@ void main() {
     vec3 kd = material_diffuse(v_uv);
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
-        c += phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+        // Shadow mapping's second pass (notes 01 §8.5): how much of light i reaches here.
+        float lit = shadow_visibility(i, v_position, N);
+        c += lit * phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
     }
     frag_color = vec4(output_color(c).rgb, u_opacity);
 }

@@ -2,6 +2,7 @@
 // Deferred lighting / light pre-pass (notes 02): per light, accumulate the
 // diffuse and the specular light apart, without the material.
 #include "common/lighting.glsl"
+#include "common/shadow.glsl"
 #include "common/gbuffer_read.glsl"
 uniform int u_light_id;
 uniform vec3 u_eye;
@@ -19,6 +20,8 @@ void main() {
     if (radius >= 0.0 && distance(P, light.position_type.xyz) > radius) discard;
     vec3 d, s;
     phong_light(light, P, ns.xyz, normalize(u_eye - P), ns.w, d, s);
-    diffuse_light = vec4(d, 1.0);
-    specular_light = vec4(s, 1.0);
+    // Shadow mapping's second pass (notes 01 §8.5) scales both lights.
+    float lit = shadow_visibility(u_light_id, P, ns.xyz);
+    diffuse_light = vec4(lit * d, 1.0);
+    specular_light = vec4(lit * s, 1.0);
 }

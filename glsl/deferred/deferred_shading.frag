@@ -2,6 +2,7 @@
 // "Our current deferred shader" (notes 04): for every pixel of the G-buffer,
 // for one light (u_light_id), shade. Drawn once per light with additive blending.
 #include "common/lighting.glsl"
+#include "common/shadow.glsl"
 #include "common/gbuffer_read.glsl"
 uniform int u_light_id;
 uniform vec3 u_eye;
@@ -12,5 +13,7 @@ void main() {
     Surface s = read_gbuffer(uv);
     if (s.depth == 1.0) discard;   // background: no surface here
     vec3 V = normalize(u_eye - s.P);
-    light_out = vec4(phong(u_lights[u_light_id], s.P, s.N, V, s.kd, s.ks, s.shininess), 1.0);
+    // Shadow mapping's second pass (notes 01 §8.5), from the G-buffer's P and N.
+    float lit = shadow_visibility(u_light_id, s.P, s.N);
+    light_out = vec4(lit * phong(u_lights[u_light_id], s.P, s.N, V, s.kd, s.ks, s.shininess), 1.0);
 }

@@ -2,6 +2,7 @@
 // Light volume shading (notes 04): the volume is a window into the G-buffer.
 // Same lighting code as before, for ONE light: u_lights[u_light_id].
 #include "common/lighting.glsl"
+#include "common/shadow.glsl"
 #include "common/gbuffer_read.glsl"
 uniform int u_light_id;
 uniform vec3 u_eye;
@@ -17,5 +18,7 @@ void main() {
     float radius = light.direction_radius.w;
     if (radius >= 0.0 && distance(s.P, light.position_type.xyz) > radius) discard;
     vec3 V = normalize(u_eye - s.P);
-    light_out = vec4(phong(light, s.P, s.N, V, s.kd, s.ks, s.shininess), 1.0);
+    // The volume shader samples the light's shadow map (notes 01 §8.5).
+    float lit = shadow_visibility(u_light_id, s.P, s.N);
+    light_out = vec4(lit * phong(light, s.P, s.N, V, s.kd, s.ks, s.shininess), 1.0);
 }

@@ -1,6 +1,7 @@
 #version 330 core
 // Forward rendering (notes 04): for every fragment, for every light, shade.
 #include "common/lighting.glsl"
+#include "common/shadow.glsl"
 #include "common/normals.glsl"
 #include "common/material.glsl"
 #include "common/alpha_test.glsl"
@@ -23,7 +24,9 @@ void main() {
     vec3 kd = material_diffuse(v_uv);
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
-        c += phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+        // Shadow mapping's second pass (notes 01 §8.5): how much of light i reaches here.
+        float lit = shadow_visibility(i, v_position, N);
+        c += lit * phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
     }
     frag_color = output_color(c);
 }

@@ -56,6 +56,8 @@ pub struct DrawList {
     pub items: Vec<DrawItem>,
     pub meshes: Vec<Mesh>,
     pub textures: Vec<Texture>,
+    /// Each mesh's axis-aligned box in its own space (lo, hi).
+    pub bounds: Vec<(Vec3, Vec3)>,
     /// The scene's billboards (src/frame/billboards.rs).
     pub billboards: BillboardDraws,
 }
@@ -67,13 +69,13 @@ impl DrawList {
         let mut textures = Vec::new();
         let mut texture_index: HashMap<PathBuf, usize> = HashMap::new();
         let mut items = Vec::new();
-        let mut centres = Vec::new();
+        let mut bounds = Vec::new();
         for o in &scene.objects {
             let mesh = match mesh_index.get(&o.mesh) {
                 Some(&i) => i,
                 None => {
                     let data = mesh_data(&o.mesh)?;
-                    centres.push(bounds_centre(&data));
+                    bounds.push(mesh_bounds(&data));
                     meshes.push(Mesh::upload(gl, &data)?);
                     mesh_index.insert(o.mesh.clone(), meshes.len() - 1);
                     meshes.len() - 1
@@ -115,13 +117,14 @@ impl DrawList {
                 opacity: m.opacity,
                 transparent: m.is_transparent(),
                 depth_func: m.depth_func,
-                centre: centres[mesh],
+                centre: (bounds[mesh].0 + bounds[mesh].1) * 0.5,
             });
         }
         Ok(DrawList {
             items,
             meshes,
             textures,
+            bounds,
             billboards: BillboardDraws::new(gl, scene)?,
         })
     }
@@ -144,6 +147,19 @@ impl DrawList {
             d.transparent = m.is_transparent();
             d.depth_func = m.depth_func;
         }
+    }
+
+    /// The corners of every opaque object's box, in world space: what a
+    /// shadow map must hold (src/frame/shadows.rs).
+    pub fn world_corners(&self) -> Vec<Vec3> {
+        let opaque = self.items.iter().filter(|d| !d.transparent);
+        opaque
+            .flat_map(|d| {
+                let (lo, hi) = self.bounds[d.mesh];
+                math::shadow::corners(lo, hi).map(|c| d.model.transform_point3(c))
+            })
+            .filter(|p| p.is_finite())
+            .collect()
     }
 
     pub fn mesh(&self, d: &DrawItem) -> &Mesh {
@@ -180,8 +196,9 @@ pub fn normal_matrix(model: &Mat4) -> Mat3 {
     }
 }
 
-/// The centre of the axis-aligned box around the mesh's vertices.
-fn bounds_centre(data: &MeshData) -> Vec3 {
+/// The axis-aligned box around the mesh's vertices (a point at the origin
+/// for an empty mesh).
+fn mesh_bounds(data: &MeshData) -> (Vec3, Vec3) {
     let mut lo = Vec3::splat(f32::INFINITY);
     let mut hi = Vec3::splat(f32::NEG_INFINITY);
     for v in &data.vertices {
@@ -190,9 +207,9 @@ fn bounds_centre(data: &MeshData) -> Vec3 {
         hi = hi.max(p);
     }
     if lo.cmple(hi).all() {
-        (lo + hi) * 0.5
+        (lo, hi)
     } else {
-        Vec3::ZERO
+        (Vec3::ZERO, Vec3::ZERO)
     }
 }
 

@@ -165,7 +165,7 @@ mod tests {
             kq: 0.032,
             inner_angle: 20.0,
             outer_angle: 30.0,
-            shadow: false,
+            shadow: None,
         }
     }
 

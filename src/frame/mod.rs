@@ -19,6 +19,7 @@ pub mod gbuffer;
 pub mod lights;
 pub mod meshes;
 pub mod plan;
+pub mod shadows;
 pub mod targets;
 pub mod technique;
 pub mod timing;

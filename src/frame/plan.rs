@@ -133,13 +133,21 @@ impl FramePlan {
                 },
             ),
         };
+        // Passes that run once, before every view (the shadow maps).
+        let mut passes = Vec::new();
+        for (index, t) in registry.iter().enumerate().filter(|(_, t)| t.before_views) {
+            let ps = (t.passes)(scene, lights).into_iter();
+            passes.extend(ps.map(|p| Pass {
+                technique: index,
+                ..p
+            }));
+        }
         let world: Vec<(usize, Vec<Pass>)> = registry
             .iter()
             .enumerate()
-            .filter(|&(i, _)| Some(i) != director)
+            .filter(|&(i, t)| Some(i) != director && !t.before_views)
             .map(|(i, t)| (i, (t.passes)(scene, lights)))
             .collect();
-        let mut passes = Vec::new();
         for stage in order.stages {
             match stage {
                 Stage::World(view) => {

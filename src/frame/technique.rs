@@ -12,6 +12,7 @@ use crate::frame::draw_list::DrawList;
 use crate::frame::lights::FrameLights;
 use crate::frame::meshes::FrameMeshes;
 use crate::frame::plan::Pass;
+use crate::frame::shadows::ShadowMaps;
 use crate::frame::targets::{TargetDesc, Targets};
 use crate::frame::uniforms::FrameUniforms;
 use crate::frame::views::View;
@@ -49,6 +50,10 @@ pub struct Technique {
     /// that view. None (every other technique): the frame is the world
     /// drawn once, from the camera. At most one technique orders a frame.
     pub order: Option<fn(&Scene, &FrameLights) -> Option<FrameOrder>>,
+    /// Its passes run once a frame, before any view (shadow maps: the
+    /// light's view of the world does not change with the camera's).
+    /// False: they run for every view, as `order` says.
+    pub before_views: bool,
 }
 
 /// The frame as a technique that draws the world several times orders it.
@@ -87,6 +92,18 @@ impl Programs<'_> {
     pub fn build(&self, stages: &[(u32, &str)]) -> Result<Program> {
         Program::new(self.gl, self.sources, stages, self.defines)
     }
+
+    /// `build`, with `#define`s of its own besides the shared ones.
+    pub fn build_with(
+        &self,
+        stages: &[(u32, &str)],
+        defines: &[(&str, String)],
+    ) -> Result<Program> {
+        let all: Vec<(&str, String)> = (self.defines.iter().cloned())
+            .chain(defines.iter().cloned())
+            .collect();
+        Program::new(self.gl, self.sources, stages, &all)
+    }
 }
 
 /// What a pass is given: the scene, this frame's values, and the GL objects
@@ -102,4 +119,6 @@ pub struct Frame<'a> {
     pub lights: &'a FrameLights,
     pub targets: &'a Targets,
     pub meshes: &'a FrameMeshes,
+    /// The shadow maps and the `Shadows` block (src/frame/shadows.rs).
+    pub shadows: &'a ShadowMaps,
 }

@@ -161,7 +161,7 @@ impl Framebuffer {
     }
 }
 
-fn bytemuck_f32(v: &mut [f32]) -> &mut [u8] {
+pub fn bytemuck_f32(v: &mut [f32]) -> &mut [u8] {
     // f32 has no padding and any byte pattern is a valid f32.
     unsafe { std::slice::from_raw_parts_mut(v.as_mut_ptr() as *mut u8, std::mem::size_of_val(v)) }
 }

@@ -6,6 +6,7 @@
 
 pub mod buffer;
 pub mod debug;
+pub mod depth_map;
 pub mod egl;
 pub mod framebuffer;
 pub mod live;

@@ -235,6 +235,11 @@ impl Program {
         unsafe { self.gl.use_program(Some(self.id)) }
     }
 
+    /// glUseProgram(0)
+    pub fn unuse(&self) {
+        unsafe { self.gl.use_program(None) }
+    }
+
     fn loc(&self, name: &str) -> Option<glow::UniformLocation> {
         if let Some(l) = self.locations.borrow().get(name) {
             return *l;

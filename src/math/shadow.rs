@@ -52,6 +52,60 @@ pub fn directional(direction: Vec3, centre: Vec3, radius: f32) -> Option<Mat4> {
     Some(orthographic(-r, r, -r, r, r, 3.0 * r) * view)
 }
 
+/// A directional light's view-projection fitted to points (notes 01
+/// §8.5.1, aliasing: the fewer world units a texel covers, the sharper the
+/// shadow). The light looks along `direction`; in its view space the box
+/// holds every point of `scene` (every caster, so nothing between the light
+/// and what is seen is lost); with `visible`, x and y shrink to the part of
+/// the scene those points span (the camera's frustum), when they overlap.
+/// Returns the matrix and the box's width and height in world units.
+pub fn directional_fitted(
+    direction: Vec3,
+    scene: &[Vec3],
+    visible: Option<&[Vec3]>,
+) -> Option<(Mat4, f32, f32)> {
+    let d = direction.try_normalize()?;
+    let (lo, hi) = bounds(scene)?;
+    let centre = (lo + hi) * 0.5;
+    let r = ((hi - lo).length() * 0.5).max(1e-3);
+    let view = look_at(centre - d * 2.0 * r, centre, up_for(d));
+    let to_light = |p: &[Vec3]| {
+        let q: Vec<Vec3> = p.iter().map(|&p| view.transform_point3(p)).collect();
+        bounds(&q)
+    };
+    let (mut lo, mut hi) = to_light(scene)?;
+    if let Some((vlo, vhi)) = visible.and_then(to_light) {
+        let (nlo, nhi) = (lo.max(vlo), hi.min(vhi));
+        if nlo.x < nhi.x && nlo.y < nhi.y {
+            (lo.x, lo.y, hi.x, hi.y) = (nlo.x, nlo.y, nhi.x, nhi.y);
+        }
+    }
+    // A margin of 1% keeps points on the box's faces inside it.
+    let m = (hi - lo).max(Vec3::splat(1e-3)) * 0.01;
+    let (lo, hi) = (lo - m, hi + m);
+    // View space looks down -z: the near plane is at -hi.z, the far at -lo.z.
+    let projection = orthographic(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z);
+    Some((projection * view, hi.x - lo.x, hi.y - lo.y))
+}
+
+/// The axis-aligned box around `points` (None for none, or a non-finite one).
+pub fn bounds(points: &[Vec3]) -> Option<(Vec3, Vec3)> {
+    let lo = points.iter().fold(Vec3::INFINITY, |a, &p| a.min(p));
+    let hi = points.iter().fold(Vec3::NEG_INFINITY, |a, &p| a.max(p));
+    (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
+}
+
+/// The eight corners of the box `lo`..`hi`.
+pub fn corners(lo: Vec3, hi: Vec3) -> [Vec3; 8] {
+    std::array::from_fn(|i| {
+        Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        )
+    })
+}
+
 /// A spot light's view-projection (notes 02: "perspective projection" for a
 /// light at a point): from `position` along `direction`, a square frustum
 /// whose half-angle is the cone's outer angle, from `near` to `far`. None
@@ -150,6 +204,30 @@ mod tests {
             assert!(near < far, "{dir}");
         }
         assert!(directional(Vec3::ZERO, Vec3::ZERO, 1.0).is_none());
+    }
+
+    #[test]
+    fn a_fitted_box_holds_the_scene_and_narrows_to_the_visible_part() {
+        let scene = corners(Vec3::new(-10.0, 0.0, -10.0), Vec3::new(10.0, 2.0, 10.0));
+        for dir in [Vec3::new(-0.3, -1.0, -0.4), Vec3::new(1.0, -0.02, 0.0)] {
+            let (m, w, h) = directional_fitted(dir, &scene, None).unwrap();
+            for p in scene {
+                let q = project(m, p);
+                assert!(q.abs().max_element() <= 1.0, "{dir} {p}: {q}");
+            }
+            // A small visible part: a narrower box, every scene point still
+            // inside in depth.
+            let seen = corners(Vec3::new(-1.0, 0.0, -1.0), Vec3::new(1.0, 1.0, 1.0));
+            let (mv, wv, hv) = directional_fitted(dir, &scene, Some(&seen)).unwrap();
+            assert!(wv * hv < 0.25 * w * h, "{dir}: {wv}x{hv} vs {w}x{h}");
+            for p in seen {
+                assert!(project(mv, p).abs().max_element() <= 1.0);
+            }
+            for p in scene {
+                assert!(project(mv, p).z.abs() <= 1.0);
+            }
+        }
+        assert!(directional_fitted(Vec3::NEG_Y, &[], None).is_none());
     }
 
     #[test]

@@ -11,6 +11,7 @@ use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, max_lights};
 use crate::frame::meshes::FrameMeshes;
 use crate::frame::plan::{FramePlan, Pass};
+use crate::frame::shadows::{ShadowMaps, casters};
 use crate::frame::targets::{OUTPUT, TargetDesc, Targets};
 use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
 use crate::frame::uniforms::FrameUniforms;
@@ -40,6 +41,8 @@ pub struct Renderer {
     draws: DrawList,
     lights_ubo: Buffer,
     meshes: FrameMeshes,
+    /// The casting lights' depth maps (none when no light casts).
+    shadows: ShadowMaps,
     /// Where shader text comes from, and the light limit, for programs built later.
     sources: Sources,
     max_lights: usize,
@@ -107,6 +110,7 @@ impl Renderer {
             draws: DrawList::new(gl, scene)?,
             lights_ubo,
             meshes: FrameMeshes::new(gl)?,
+            shadows: ShadowMaps::new(gl, scene, max_lights)?,
             sources: sources.clone(),
             max_lights,
             techniques,
@@ -180,6 +184,9 @@ impl Renderer {
                 self.height,
             )?;
         }
+        if casters(&self.scene) != self.shadows.casters() {
+            self.shadows = ShadowMaps::new(&self.gl, &self.scene, self.max_lights)?;
+        }
         self.lights = lights;
         self.upload_lights();
         self.draws.update_values(&self.scene);
@@ -194,6 +201,11 @@ impl Renderer {
     /// Each light's radius and volume (the demo's light-volume views).
     pub fn lights(&self) -> &FrameLights {
         &self.lights
+    }
+
+    /// The shadow maps (the demo's shadow-map inspector, the tests).
+    pub fn shadows(&self) -> &ShadowMaps {
+        &self.shadows
     }
 
     /// The full-screen triangle and the volume meshes.
@@ -280,6 +292,8 @@ impl Renderer {
         let uniforms: Vec<FrameUniforms> = (self.plan.views.iter())
             .map(|v| self.frame_uniforms(camera, v))
             .collect();
+        let aspect = self.width as f32 / self.height as f32;
+        (self.shadows).update(&self.scene, &self.draws, camera, aspect);
         let mut timer = PassTimer::new(&self.gl, self.timing, self.gpu_timers);
         for pass in &self.plan.passes {
             let frame = Frame {
@@ -291,6 +305,7 @@ impl Renderer {
                 lights: &self.lights,
                 targets: &self.targets,
                 meshes: &self.meshes,
+                shadows: &self.shadows,
             };
             let technique = self.techniques[pass.technique].as_ref();
             technique.expect("built for its pass").run(pass, &frame);

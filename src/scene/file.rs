@@ -134,8 +134,8 @@ pub(super) struct LightFile {
     pub(super) inner_angle: f32,
     #[serde(default = "spot_outer")]
     pub(super) outer_angle: f32,
-    #[serde(default)]
-    pub(super) shadow: bool,
+    /// `true`, or a table of shadow-map knobs (src/scene/shadows.rs).
+    pub(super) shadow: Option<toml::Value>,
 }
 
 fn white() -> [f32; 3] {

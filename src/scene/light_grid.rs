@@ -77,7 +77,7 @@ pub(super) fn generate_lights(g: &LightGrid) -> Vec<Light> {
                 kq: g.attenuation[2],
                 inner_angle: 20.0,
                 outer_angle: 30.0,
-                shadow: false,
+                shadow: None,
             }
         })
         .collect()

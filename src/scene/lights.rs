@@ -5,6 +5,7 @@
 use super::file::SceneFile;
 use super::light_grid::generate_lights;
 use super::resolve::{finite, non_negative};
+use super::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D};
 use super::{Light, LightKind};
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
@@ -68,8 +69,22 @@ pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
             kq,
             inner_angle: l.inner_angle,
             outer_angle: l.outer_angle,
-            shadow: l.shadow,
+            shadow: super::shadows::shadow(&key("shadow"), l.shadow.as_ref())?,
         });
+    }
+    let casting = |point: bool| {
+        let same = |l: &&Light| (l.kind == LightKind::Point) == point;
+        lights
+            .iter()
+            .filter(|l| l.shadow.is_some())
+            .filter(same)
+            .count()
+    };
+    let (flat, cube) = (casting(false), casting(true));
+    if flat > MAX_SHADOW_MAPS_2D || cube > MAX_SHADOW_CUBES {
+        bail!(
+            "lights: {flat} directional or spot and {cube} point lights cast shadows; at most {MAX_SHADOW_MAPS_2D} and {MAX_SHADOW_CUBES} may (one texture unit each)"
+        );
     }
     if let Some(g) = &f.light_grid {
         super::light_grid::check(g)?;

@@ -19,6 +19,7 @@ mod mirrors;
 mod resolve;
 mod save;
 mod settings;
+pub mod shadows;
 mod views;
 
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
@@ -30,6 +31,7 @@ pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, DepthFunc, MirrorOrder, RenderPath,
     Shading,
 };
+pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
 pub use views::{SplitView, check_viewport};
 
 use crate::assets;
@@ -125,7 +127,8 @@ pub struct Light {
     pub kq: f32,
     pub inner_angle: f32,
     pub outer_angle: f32,
-    pub shadow: bool,
+    /// Casts shadows (notes 01 §8.5) with these knobs.
+    pub shadow: Option<Shadow>,
 }
 
 impl Light {

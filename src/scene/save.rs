@@ -6,7 +6,7 @@
 //! stay valid from the new file's folder: absolute for files on disk,
 //! `embedded:scenes/...` for a shipped scene's assets.
 
-use super::{Camera, Light, LightKind, MeshSource, Projection, Scene, knobs, read_text};
+use super::{Camera, Light, LightKind, MeshSource, Projection, Scene, knobs, read_text, shadows};
 use crate::assets;
 use anyhow::{Context as _, Result, anyhow};
 use std::path::Path;
@@ -235,8 +235,11 @@ fn light_table(l: &Light) -> toml::Value {
             toml::Value::Float(l.outer_angle.into()),
         );
     }
-    if l.shadow {
-        t.insert("shadow".into(), toml::Value::Boolean(true));
+    if let Some(s) = &l.shadow {
+        t.insert(
+            "shadow".into(),
+            toml::Value::Table(shadows::shadow_table(s)),
+        );
     }
     toml::Value::Table(t)
 }

@@ -14,6 +14,7 @@ pub mod blending;
 pub mod deferred;
 pub mod fragment_tests;
 pub mod lighting;
+pub mod shadows;
 pub mod stencil;
 
 use crate::frame::Technique;
@@ -23,6 +24,7 @@ use crate::scene::Scene;
 
 /// The registry, in frame order.
 pub static ALL: &[&Technique] = &[
+    &shadows::shadow_map::SHADOW_MAP,
     &lighting::forward::FORWARD,
     &deferred::gbuffer::GBUFFER,
     &deferred::deferred_shading::DEFERRED_SHADING,

@@ -150,16 +150,27 @@ pub fn gl_state(gl: &glow::Context) -> Vec<(String, i64)> {
             "COLOR_WRITEMASK".into(),
             mask.iter().filter(|&&b| b).count() as i64,
         ));
+        for i in 0..2 {
+            v.push((
+                format!("UNIFORM_BUFFER_BINDING[{i}]"),
+                gl.get_parameter_indexed_i32(glow::UNIFORM_BUFFER_BINDING, i) as i64,
+            ));
+        }
         v.push((
-            "UNIFORM_BUFFER_BINDING[0]".into(),
-            gl.get_parameter_indexed_i32(glow::UNIFORM_BUFFER_BINDING, 0) as i64,
+            "POLYGON_OFFSET_FACTOR".into(),
+            gl.get_parameter_f32(glow::POLYGON_OFFSET_FACTOR) as i64,
         ));
         let active = gl.get_parameter_i32(glow::ACTIVE_TEXTURE) as u32;
-        for u in 0..8 {
+        // Units 0..6: the G-buffer and the light; 6..14: the shadow maps.
+        for u in 0..14 {
             gl.active_texture(glow::TEXTURE0 + u);
             v.push((
                 format!("TEXTURE_BINDING_2D[unit {u}]"),
                 gl.get_parameter_i32(glow::TEXTURE_BINDING_2D) as i64,
+            ));
+            v.push((
+                format!("TEXTURE_BINDING_CUBE_MAP[unit {u}]"),
+                gl.get_parameter_i32(glow::TEXTURE_BINDING_CUBE_MAP) as i64,
             ));
         }
         gl.active_texture(active);

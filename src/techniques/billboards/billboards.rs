@@ -67,6 +67,7 @@ pub const BILLBOARDS: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {

@@ -34,6 +34,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::shadows;
 use crate::frame::targets::{OUTPUT, TargetDesc};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Technique};
@@ -56,6 +57,7 @@ pub const TRANSPARENCY: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
@@ -102,6 +104,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::FRAGMENT_SHADER, "blending/transparency.frag"),
     ])?;
     program.bind_uniform_block("Lights", LIGHTS_BINDING);
+    shadows::setup_program(&program);
     Ok(Box::new(Transparency { program }))
 }
 
@@ -162,6 +165,7 @@ impl RunPasses for Transparency {
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
+            f.shadows.bind(gl);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             for i in order {
                 let d = &f.draws.items[i];
@@ -191,6 +195,7 @@ impl RunPasses for Transparency {
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
+            f.shadows.unbind(gl);
             gl.use_program(None);
             gl.cull_face(glow::BACK);
             gl.disable(glow::CULL_FACE);

@@ -40,6 +40,7 @@ pub const COMPOSITE: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {

@@ -18,6 +18,7 @@
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, OUTPUT, TargetDesc};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Technique};
@@ -50,6 +51,7 @@ pub const DEFERRED_LIGHTING: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 /// The steps of this technique's passes.
@@ -99,6 +101,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::FRAGMENT_SHADER, "deferred/deferred_lighting.frag"),
     ])?;
     light.bind_uniform_block("Lights", LIGHTS_BINDING);
+    shadows::setup_program(&light);
     let combine = p.build(&[
         (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
         (

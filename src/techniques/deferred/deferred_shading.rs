@@ -20,6 +20,7 @@
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::LIGHTS_BINDING;
 use crate::frame::{Frame, Programs, RunPasses, Technique};
@@ -42,6 +43,7 @@ pub const DEFERRED_SHADING: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
@@ -85,6 +87,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::FRAGMENT_SHADER, "deferred/deferred_shading.frag"),
     ])?;
     program.bind_uniform_block("Lights", LIGHTS_BINDING);
+    shadows::setup_program(&program);
     Ok(Box::new(DeferredShading { program }))
 }
 
@@ -109,12 +112,14 @@ impl RunPasses for DeferredShading {
             gbuffer::bind_for_reading(gl, p, f.targets.get(gbuffer::NAME), u);
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
+            f.shadows.bind(gl);
             for i in 0..u.light_count {
                 p.set_i32("u_light_id", i);
                 f.meshes.fullscreen.draw();
             }
 
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
+            f.shadows.unbind(gl);
             gbuffer::unbind(gl);
             gl.use_program(None);
             gl.blend_func(glow::ONE, glow::ZERO);

@@ -34,6 +34,7 @@ pub const GBUFFER: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 /// Which G-buffer the scene's path fills: None (forward), full, or thin.

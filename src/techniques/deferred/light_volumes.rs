@@ -33,6 +33,7 @@
 use crate::frame::gbuffer;
 use crate::frame::lights::{FrameLights, Volume};
 use crate::frame::plan::Pass;
+use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::LIGHTS_BINDING;
 use crate::frame::{Frame, Programs, RunPasses, Technique};
@@ -61,6 +62,7 @@ pub const LIGHT_VOLUMES: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 fn runs(scene: &Scene, lights: &FrameLights) -> bool {
@@ -127,6 +129,7 @@ pub fn volume_program(p: &Programs) -> Result<Program> {
         (glow::FRAGMENT_SHADER, "deferred/light_volumes.frag"),
     ])?;
     program.bind_uniform_block("Lights", LIGHTS_BINDING);
+    shadows::setup_program(&program);
     Ok(program)
 }
 
@@ -159,11 +162,13 @@ pub fn volume_pass(f: &Frame, p: &Program, draw_volumes: fn(&Frame, &Program)) {
             LIGHTS_BINDING,
             Some(f.uniforms.lights_ubo),
         );
+        f.shadows.bind(gl);
     }
     draw_volumes(f, p);
     draw_full_screen_lights(f, p);
     unsafe {
         gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
+        f.shadows.unbind(gl);
         gbuffer::unbind(gl);
         gl.use_program(None);
         gl.bind_framebuffer(glow::FRAMEBUFFER, None);

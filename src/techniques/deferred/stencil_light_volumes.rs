@@ -51,6 +51,7 @@ pub const STENCIL_LIGHT_VOLUMES: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 fn runs(scene: &Scene, lights: &FrameLights) -> bool {

@@ -41,6 +41,7 @@ pub const VIEWPORTS: Technique = Technique {
     targets,
     create,
     order: Some(order),
+    before_views: false,
 };
 
 fn passes(_: &Scene, _: &FrameLights) -> Vec<Pass> {

@@ -23,6 +23,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::shadows;
 use crate::frame::targets::{OUTPUT, TargetDesc};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Technique};
@@ -57,6 +58,7 @@ pub const FORWARD: Technique = Technique {
     targets,
     create,
     order: None,
+    before_views: false,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
@@ -102,6 +104,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     ])?;
     for program in [&phong, &gouraud, &flat] {
         program.bind_uniform_block("Lights", LIGHTS_BINDING);
+        shadows::setup_program(program);
     }
     Ok(Box::new(Forward {
         phong,
@@ -160,6 +163,7 @@ impl RunPasses for Forward {
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             f.view.set_uniforms(p, f.uniforms.eye);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
+            f.shadows.bind(gl);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             let mut depth_func = settings.depth_func;
             // Transparent objects are drawn later, sorted (blending/transparency.rs);
@@ -187,6 +191,7 @@ impl RunPasses for Forward {
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
+            f.shadows.unbind(gl);
             gl.use_program(None);
             gl.disable(glow::CULL_FACE);
             gl.disable(glow::DEPTH_TEST);

@@ -64,6 +64,7 @@ pub const MIRROR: Technique = Technique {
     targets,
     create,
     order: Some(order),
+    before_views: false,
 };
 
 /// Normal first, pass 2: stencil where the mirror passes the depth test.

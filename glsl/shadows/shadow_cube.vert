@@ -1,0 +1,17 @@
+#version 330 core
+// Shadow pass, cube map (notes 01 §8.5, "6 maps for omnidirectional
+// lights"): world position on, for the fragment shader's distance. Six
+// passes: u_light_view_projection is one face's. One pass: the geometry
+// shader (shadow_cube.geom) projects to every face itself.
+layout(location = 0) in vec3 a_position;
+
+uniform mat4 u_model;
+uniform mat4 u_light_view_projection;
+
+out vec3 v_world;
+
+void main() {
+    vec4 world = u_model * vec4(a_position, 1.0);
+    v_world = world.xyz;
+    gl_Position = u_light_view_projection * world;
+}

@@ -1,0 +1,381 @@
+//! Shadow maps (notes 01 §8.5; notes 02 "Rendering Cast Shadows"): which
+//! lights cast, the depth texture each renders into, the light's view of
+//! the world this frame, and the `Shadows` block that every lighting shader
+//! reads (glsl/common/shadow.glsl).
+//!
+//! - A directional or spot light has one 2D map ("1 map for unidirectional
+//!   lights"): orthographic for a directional light, perspective for a spot
+//!   light, as notes 02 says. Slots 0-3 of the block.
+//! - A point light has a cube map ("6 maps for omnidirectional lights").
+//!   Slots 4-7. It stores the distance to the light divided by `far`, the
+//!   same value whichever face holds it (docs/shadows.md says why that
+//!   beats the perspective depth).
+//!
+//! The shadow pass (src/techniques/shadows/shadow_map.rs) draws into the
+//! maps; the lighting passes bind them with `bind` and call
+//! `shadow_visibility` in their shaders.
+
+use crate::frame::draw_list::DrawList;
+use crate::gl::Gl;
+use crate::gl::buffer::Buffer;
+use crate::gl::depth_map::DepthMap;
+use crate::gl::program::Program;
+use crate::math::shadow as matrices;
+use crate::scene::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D};
+use crate::scene::{Camera, CubeRender, LightKind, Pcf, Scene, Shadow};
+use anyhow::Result;
+use glam::{Mat4, Vec3, Vec4};
+use glow::HasContext;
+
+/// The uniform-block binding point of the `Shadows` block.
+pub const SHADOWS_BINDING: u32 = 1;
+/// Texture units: the 2D maps on 6..10, the cube maps on 10..14 (the
+/// G-buffer and light textures use 0..6).
+pub const UNIT_2D: u32 = 6;
+pub const UNIT_CUBE: u32 = UNIT_2D + MAX_SHADOW_MAPS_2D as u32;
+/// Bytes of one `ShadowMap` in the std140 block: a mat4 and two vec4.
+const SHADOW_STRIDE: usize = 96;
+const SLOTS: usize = MAX_SHADOW_MAPS_2D + MAX_SHADOW_CUBES;
+
+/// The kinds glsl/common/shadow.glsl tells apart.
+pub const ORTHOGRAPHIC: i32 = 0;
+pub const PERSPECTIVE: i32 = 1;
+pub const CUBE: i32 = 2;
+
+/// A light that casts a shadow.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Caster {
+    /// Index of the light in the scene.
+    pub light: usize,
+    /// Its entry in the `Shadows` block: 0-3 a 2D map, 4-7 a cube map.
+    pub slot: usize,
+    pub cube: bool,
+    pub shadow: Shadow,
+}
+
+impl Caster {
+    /// Which sampler of its kind reads it (`u_shadow_map[i]`, `u_shadow_cube[i]`).
+    pub fn sampler(&self) -> usize {
+        self.slot % MAX_SHADOW_MAPS_2D
+    }
+
+    /// The texture unit its map is bound to.
+    pub fn unit(&self) -> u32 {
+        if self.cube {
+            UNIT_CUBE + self.sampler() as u32
+        } else {
+            UNIT_2D + self.sampler() as u32
+        }
+    }
+}
+
+/// The scene's casting lights, in light order (the scene's check keeps
+/// them within four of each kind).
+pub fn casters(scene: &Scene) -> Vec<Caster> {
+    let (mut flat, mut cube) = (0, 0);
+    let mut out = Vec::new();
+    for (light, l) in scene.lights.iter().enumerate() {
+        let Some(shadow) = l.shadow else { continue };
+        let is_cube = l.kind == LightKind::Point;
+        let slot = if is_cube {
+            cube += 1;
+            MAX_SHADOW_MAPS_2D + cube - 1
+        } else {
+            flat += 1;
+            flat - 1
+        };
+        if slot < SLOTS && (is_cube || slot < MAX_SHADOW_MAPS_2D) {
+            out.push(Caster {
+                light,
+                slot,
+                cube: is_cube,
+                shadow,
+            });
+        }
+    }
+    out
+}
+
+/// A light's view of the world for one frame.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LightView {
+    /// ORTHOGRAPHIC, PERSPECTIVE or CUBE.
+    pub kind: i32,
+    /// The light's view-projection (one; six for a cube, in face order).
+    pub view_projections: Vec<Mat4>,
+    pub near: f32,
+    pub far: f32,
+    /// A texel's size in world units: the box's width / resolution
+    /// (orthographic), or per unit of distance from the light (perspective
+    /// and cube: 2 tan(half-angle) / resolution).
+    pub texel: f32,
+}
+
+/// Where the light looks this frame. `scene_points` are the corners of
+/// every opaque object's box (world); `visible` the corners of the
+/// camera's frustum, cut at the scene's far side. None when there is
+/// nothing to cast onto.
+pub fn light_view(
+    scene: &Scene,
+    caster: &Caster,
+    scene_points: &[Vec3],
+    visible: &[Vec3],
+) -> Option<LightView> {
+    let l = &scene.lights[caster.light];
+    let s = caster.shadow;
+    let res = s.resolution as f32;
+    // Spot and point lights: from the light to the farthest corner of the
+    // scene; the near plane a thousandth of that (depth clamping in the
+    // shadow pass keeps what lies nearer still casting).
+    let far = || {
+        let d = scene_points.iter().map(|p| p.distance(l.position));
+        d.fold(0.0f32, f32::max).max(1e-2) * 1.01
+    };
+    match l.kind {
+        LightKind::Directional => {
+            let visible = (s.fit == crate::scene::ShadowFit::Visible).then_some(visible);
+            let (m, w, h) = matrices::directional_fitted(l.direction, scene_points, visible)?;
+            Some(LightView {
+                kind: ORTHOGRAPHIC,
+                view_projections: vec![m],
+                near: 0.0,
+                far: 1.0,
+                texel: w.max(h) / res,
+            })
+        }
+        LightKind::Spot => {
+            let far = far();
+            let m = matrices::spot(l.position, l.direction, l.outer_angle, far * 1e-3, far)?;
+            Some(LightView {
+                kind: PERSPECTIVE,
+                view_projections: vec![m],
+                near: far * 1e-3,
+                far,
+                texel: 2.0 * l.outer_angle.to_radians().tan() / res,
+            })
+        }
+        LightKind::Point => {
+            let far = far();
+            Some(LightView {
+                kind: CUBE,
+                view_projections: matrices::point(l.position, far * 1e-3, far).to_vec(),
+                near: far * 1e-3,
+                far,
+                texel: 2.0 / res,
+            })
+        }
+    }
+}
+
+/// The corners of the camera's view frustum, its far plane pulled in to
+/// the farthest of `scene_points` (what the camera can see of the scene).
+pub fn visible_corners(camera: &Camera, aspect: f32, scene_points: &[Vec3]) -> Vec<Vec3> {
+    let forward = (camera.target - camera.eye).normalize_or_zero();
+    let reach = scene_points
+        .iter()
+        .map(|p| (*p - camera.eye).dot(forward))
+        .fold(camera.near * 2.0, f32::max);
+    let mut c = camera.clone();
+    c.far = c.far.min(reach * 1.01).max(c.near * 1.5);
+    let inverse = (c.projection(aspect) * c.view()).inverse();
+    matrices::corners(Vec3::NEG_ONE, Vec3::ONE)
+        .map(|ndc| inverse.project_point3(ndc))
+        .to_vec()
+}
+
+/// Every casting light's map, its view this frame, and the `Shadows` block.
+pub struct ShadowMaps {
+    pub maps: Vec<(Caster, DepthMap)>,
+    /// This frame's light views, one per map (None: nothing to draw).
+    pub views: Vec<Option<LightView>>,
+    /// 1 x 1 maps bound to the samplers no light uses: GL 3.3 wants a
+    /// complete texture of the sampler's type on every unit a program reads.
+    empty_2d: DepthMap,
+    empty_cube: DepthMap,
+    ubo: Buffer,
+    max_lights: usize,
+}
+
+impl ShadowMaps {
+    /// Allocate a map for every caster of `scene`.
+    pub fn new(gl: &Gl, scene: &Scene, max_lights: usize) -> Result<ShadowMaps> {
+        let mut maps = Vec::new();
+        for c in casters(scene) {
+            let size = c.shadow.resolution as i32;
+            let map = if c.cube {
+                let layered = c.shadow.cube == CubeRender::GeometryShader;
+                DepthMap::new_cube(gl, size, layered)?
+            } else {
+                DepthMap::new_2d(gl, size)?
+            };
+            as_shadow_sampler(gl, &map, c.shadow.pcf);
+            maps.push((c, map));
+        }
+        let empty_2d = DepthMap::new_2d(gl, 1)?;
+        let empty_cube = DepthMap::new_cube(gl, 1, false)?;
+        as_shadow_sampler(gl, &empty_2d, Pcf::None);
+        as_shadow_sampler(gl, &empty_cube, Pcf::None);
+        let ubo = Buffer::new(
+            gl,
+            glow::UNIFORM_BUFFER,
+            block_size(max_lights),
+            glow::DYNAMIC_DRAW,
+        )?;
+        Ok(ShadowMaps {
+            views: vec![None; maps.len()],
+            maps,
+            empty_2d,
+            empty_cube,
+            ubo,
+            max_lights,
+        })
+    }
+
+    /// The casters these maps were made for.
+    pub fn casters(&self) -> Vec<Caster> {
+        self.maps.iter().map(|(c, _)| c.clone()).collect()
+    }
+
+    /// Fit each light's view to the scene and the camera, and write the
+    /// `Shadows` block.
+    pub fn update(&mut self, scene: &Scene, draws: &DrawList, camera: &Camera, aspect: f32) {
+        let points = draws.world_corners();
+        let visible = visible_corners(camera, aspect, &points);
+        self.views = (self.maps.iter())
+            .map(|(c, _)| light_view(scene, c, &points, &visible))
+            .collect();
+        self.ubo.write(&self.pack());
+    }
+
+    /// The std140 `Shadows` block: per slot, the shadow matrix (bias x
+    /// light projection x light view), (kind, texel, near, far) and (bias,
+    /// normal offset, PCF kernel, resolution); then each light's slot, four
+    /// to an ivec4, -1 for none.
+    fn pack(&self) -> Vec<u8> {
+        let mut out = vec![0u8; block_size(self.max_lights)];
+        let mut put = |at: usize, v: &[f32]| {
+            for (k, x) in v.iter().enumerate() {
+                out[at + 4 * k..at + 4 * k + 4].copy_from_slice(&x.to_ne_bytes());
+            }
+        };
+        let mut slot_of = vec![-1i32; self.max_lights];
+        for ((c, _), view) in self.maps.iter().zip(&self.views) {
+            let Some(v) = view else { continue };
+            let at = c.slot * SHADOW_STRIDE;
+            let s = c.shadow;
+            put(
+                at,
+                &(matrices::bias() * v.view_projections[0]).to_cols_array(),
+            );
+            put(
+                at + 64,
+                &Vec4::new(v.kind as f32, v.texel, v.near, v.far).to_array(),
+            );
+            let b = [
+                s.bias,
+                s.normal_offset,
+                s.pcf.code() as f32,
+                s.resolution as f32,
+            ];
+            put(at + 80, &b);
+            if c.light < slot_of.len() {
+                slot_of[c.light] = c.slot as i32;
+            }
+        }
+        let base = SLOTS * SHADOW_STRIDE;
+        for (i, s) in slot_of.iter().enumerate() {
+            out[base + 4 * i..base + 4 * i + 4].copy_from_slice(&s.to_ne_bytes());
+        }
+        out
+    }
+
+    /// Bind every map to its texture unit (the unused samplers get the
+    /// empty maps) and the `Shadows` block to its binding point.
+    pub fn bind(&self, gl: &glow::Context) {
+        unsafe {
+            for i in 0..MAX_SHADOW_MAPS_2D {
+                gl.active_texture(glow::TEXTURE0 + UNIT_2D + i as u32);
+                gl.bind_texture(glow::TEXTURE_2D, Some(self.empty_2d.texture));
+                gl.active_texture(glow::TEXTURE0 + UNIT_CUBE + i as u32);
+                gl.bind_texture(glow::TEXTURE_CUBE_MAP, Some(self.empty_cube.texture));
+            }
+            for (c, map) in &self.maps {
+                gl.active_texture(glow::TEXTURE0 + c.unit());
+                gl.bind_texture(map.target, Some(map.texture));
+            }
+            gl.active_texture(glow::TEXTURE0);
+            gl.bind_buffer_base(glow::UNIFORM_BUFFER, SHADOWS_BINDING, Some(self.ubo.id));
+        }
+    }
+
+    /// Undo `bind`.
+    pub fn unbind(&self, gl: &glow::Context) {
+        unsafe {
+            for i in 0..MAX_SHADOW_MAPS_2D as u32 {
+                gl.active_texture(glow::TEXTURE0 + UNIT_2D + i);
+                gl.bind_texture(glow::TEXTURE_2D, None);
+                gl.active_texture(glow::TEXTURE0 + UNIT_CUBE + i);
+                gl.bind_texture(glow::TEXTURE_CUBE_MAP, None);
+            }
+            gl.active_texture(glow::TEXTURE0);
+            gl.bind_buffer_base(glow::UNIFORM_BUFFER, SHADOWS_BINDING, None);
+        }
+    }
+}
+
+fn block_size(max_lights: usize) -> usize {
+    SLOTS * SHADOW_STRIDE + (max_lights / 4 + 1) * 16
+}
+
+/// The notes' "specialised sampler that takes a 4 component vector and
+/// returns the result of the shadow depth test": GL_TEXTURE_COMPARE_MODE =
+/// GL_COMPARE_REF_TO_TEXTURE, with GL_LEQUAL ("z <= light depth: lit").
+/// GL_LINEAR filtering makes the hardware compare the four nearest texels
+/// and blend the results (2x2 PCF); outside a 2D map the border depth 1.0
+/// leaves points lit.
+fn as_shadow_sampler(gl: &Gl, map: &DepthMap, pcf: Pcf) {
+    let t = map.target;
+    let filter = if pcf == Pcf::Hardware {
+        glow::LINEAR
+    } else {
+        glow::NEAREST
+    } as i32;
+    unsafe {
+        gl.bind_texture(t, Some(map.texture));
+        let compare = glow::COMPARE_REF_TO_TEXTURE as i32;
+        gl.tex_parameter_i32(t, glow::TEXTURE_COMPARE_MODE, compare);
+        gl.tex_parameter_i32(t, glow::TEXTURE_COMPARE_FUNC, glow::LEQUAL as i32);
+        gl.tex_parameter_i32(t, glow::TEXTURE_MIN_FILTER, filter);
+        gl.tex_parameter_i32(t, glow::TEXTURE_MAG_FILTER, filter);
+        if t == glow::TEXTURE_2D {
+            let border = glow::CLAMP_TO_BORDER as i32;
+            gl.tex_parameter_i32(t, glow::TEXTURE_WRAP_S, border);
+            gl.tex_parameter_i32(t, glow::TEXTURE_WRAP_T, border);
+            gl.tex_parameter_f32_slice(t, glow::TEXTURE_BORDER_COLOR, &[1.0; 4]);
+        } else {
+            for w in [
+                glow::TEXTURE_WRAP_S,
+                glow::TEXTURE_WRAP_T,
+                glow::TEXTURE_WRAP_R,
+            ] {
+                gl.tex_parameter_i32(t, w, glow::CLAMP_TO_EDGE as i32);
+            }
+        }
+        gl.bind_texture(t, None);
+    }
+}
+
+/// Tell a lighting program where the `Shadows` block and the map samplers
+/// are (GLSL 3.30 has no `layout(binding = n)`).
+pub fn setup_program(p: &Program) {
+    p.bind_uniform_block("Shadows", SHADOWS_BINDING);
+    p.use_program();
+    for i in 0..MAX_SHADOW_MAPS_2D {
+        p.set_i32(&format!("u_shadow_map[{i}]"), (UNIT_2D as usize + i) as i32);
+        p.set_i32(
+            &format!("u_shadow_cube[{i}]"),
+            (UNIT_CUBE as usize + i) as i32,
+        );
+    }
+    p.unuse();
+}

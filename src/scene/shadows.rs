@@ -1,0 +1,319 @@
+//! A light's `shadow` key (notes 01 §8.5 "Shadow mapping", §8.5.1 "Issues";
+//! notes 02 "Rendering Cast Shadows"): `shadow = true` casts with the
+//! defaults below, or a table sets the knobs that make acne, peter-panning
+//! and aliasing appear and disappear.
+//!
+//! ```toml
+//! [[lights]]
+//! type = "spot"
+//! position = [0.0, 6.0, 0.0]
+//! direction = [0.0, -1.0, 0.0]
+//! shadow = { resolution = 1024, bias = 0.02, slope_bias = 2.0, pcf = "3x3" }
+//! ```
+//!
+//! The defaults were picked from `gloss bench` on the shadow scenes (the
+//! Pareto front of time against error; docs/shadows.md has the table).
+
+use super::resolve::{finite, non_negative};
+use anyhow::{Result, bail};
+use serde::Deserialize;
+
+#[derive(Deserialize, Debug, Clone, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ShadowTable {
+    resolution: Option<u32>,
+    bias: Option<f32>,
+    slope_bias: Option<f32>,
+    normal_offset: Option<f32>,
+    cull_front: Option<bool>,
+    pcf: Option<String>,
+    fit: Option<String>,
+    cube: Option<String>,
+}
+
+/// Percentage-closer filtering: how many depth comparisons a shadow lookup
+/// averages.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pcf {
+    /// One comparison, GL_NEAREST: the hard, aliased edge of the notes.
+    None,
+    /// One lookup with GL_LINEAR on the comparison texture: the hardware
+    /// compares the four nearest texels and blends the results (2x2).
+    Hardware,
+    /// Nine GL_NEAREST comparisons, one texel apart.
+    Box3,
+    /// Twenty-five GL_NEAREST comparisons.
+    Box5,
+    /// Sixteen comparisons on a Poisson disc of radius 2.5 texels.
+    Poisson,
+}
+
+impl Pcf {
+    pub const ALL: [Pcf; 5] = [Pcf::None, Pcf::Hardware, Pcf::Box3, Pcf::Box5, Pcf::Poisson];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Pcf::None => "none",
+            Pcf::Hardware => "hardware",
+            Pcf::Box3 => "3x3",
+            Pcf::Box5 => "5x5",
+            Pcf::Poisson => "poisson",
+        }
+    }
+
+    pub fn parse(s: &str) -> Option<Pcf> {
+        Pcf::ALL.into_iter().find(|p| p.name() == s)
+    }
+
+    /// The kernel number glsl/common/shadow.glsl switches on.
+    pub fn code(self) -> i32 {
+        self as i32
+    }
+}
+
+/// What a directional light's orthographic box is fitted to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShadowFit {
+    /// The bounding sphere of the whole scene: stable, but most texels
+    /// land where the camera does not look.
+    Scene,
+    /// The part of the scene the camera sees (its frustum clipped to the
+    /// scene's bounds), in x and y; in depth still every caster.
+    Visible,
+}
+
+impl ShadowFit {
+    pub const ALL: [ShadowFit; 2] = [ShadowFit::Scene, ShadowFit::Visible];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            ShadowFit::Scene => "scene",
+            ShadowFit::Visible => "visible",
+        }
+    }
+}
+
+/// How a point light's six cube faces are drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CubeRender {
+    /// Six passes, one per face, each its own framebuffer.
+    SixPasses,
+    /// One pass: a geometry shader sends each triangle to all six faces
+    /// (gl_Layer) of a layered framebuffer.
+    GeometryShader,
+}
+
+impl CubeRender {
+    pub const ALL: [CubeRender; 2] = [CubeRender::SixPasses, CubeRender::GeometryShader];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            CubeRender::SixPasses => "six_passes",
+            CubeRender::GeometryShader => "geometry_shader",
+        }
+    }
+}
+
+/// A light's shadow map and how it is read.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shadow {
+    /// Texels along each side of the map (of each face, for a point light).
+    pub resolution: u32,
+    /// Constant bias: the point is moved this far towards the light, in
+    /// world units, before it is compared with the map.
+    pub bias: f32,
+    /// Slope-scaled bias: glPolygonOffset(slope_bias, 0) in the shadow pass
+    /// (for a point light's distance map the shader adds the same term).
+    pub slope_bias: f32,
+    /// Normal-offset bias: the point is moved along its normal by this many
+    /// shadow-map texels (the notes' "offset along their normal").
+    pub normal_offset: f32,
+    /// glCullFace(GL_FRONT) in the shadow pass: only back faces are stored.
+    pub cull_front: bool,
+    pub pcf: Pcf,
+    pub fit: ShadowFit,
+    pub cube: CubeRender,
+}
+
+/// Resolutions a map may have: powers of two from 64 to 8192.
+pub const RESOLUTIONS: [u32; 8] = [64, 128, 256, 512, 1024, 2048, 4096, 8192];
+
+impl Default for Shadow {
+    fn default() -> Self {
+        Shadow {
+            resolution: 2048,
+            bias: 0.01,
+            slope_bias: 1.5,
+            normal_offset: 1.0,
+            cull_front: false,
+            pcf: Pcf::Hardware,
+            fit: ShadowFit::Visible,
+            cube: CubeRender::SixPasses,
+        }
+    }
+}
+
+/// A light's `shadow` key, checked; `key` names it in errors (`lights[2].shadow`).
+/// The file writes `shadow = true`, `false` or a table (`toml::Value`,
+/// read here so that an unknown key is named with its light).
+pub(super) fn shadow(key: &str, file: Option<&toml::Value>) -> Result<Option<Shadow>> {
+    let t: ShadowTable = match file {
+        None | Some(toml::Value::Boolean(false)) => return Ok(None),
+        Some(toml::Value::Boolean(true)) => return Ok(Some(Shadow::default())),
+        Some(v @ toml::Value::Table(_)) => v
+            .clone()
+            .try_into()
+            .map_err(|e| anyhow::anyhow!("{key}: {}", e.to_string().trim()))?,
+        Some(other) => bail!(
+            "{key}: expected true, false or a table, found {}",
+            other.type_str()
+        ),
+    };
+    let d = Shadow::default();
+    let resolution = t.resolution.unwrap_or(d.resolution);
+    if !RESOLUTIONS.contains(&resolution) {
+        bail!("{key}.resolution: expected one of {RESOLUTIONS:?}, found {resolution}");
+    }
+    let bias = t.bias.unwrap_or(d.bias);
+    let slope_bias = t.slope_bias.unwrap_or(d.slope_bias);
+    let normal_offset = t.normal_offset.unwrap_or(d.normal_offset);
+    for (k, v) in [
+        ("bias", bias),
+        ("slope_bias", slope_bias),
+        ("normal_offset", normal_offset),
+    ] {
+        finite(&format!("{key}.{k}"), &[v])?;
+        non_negative(&format!("{key}.{k}"), &[v])?;
+    }
+    let pcf = match &t.pcf {
+        None => d.pcf,
+        Some(s) => Pcf::parse(s).ok_or_else(|| {
+            anyhow::anyhow!(
+                "{key}.pcf: expected one of {}, found \"{s}\"",
+                names(Pcf::ALL.map(Pcf::name))
+            )
+        })?,
+    };
+    let fit = match &t.fit {
+        None => d.fit,
+        Some(s) => ShadowFit::ALL
+            .into_iter()
+            .find(|f| f.name() == s)
+            .ok_or_else(|| {
+                anyhow::anyhow!("{key}.fit: expected scene or visible, found \"{s}\"")
+            })?,
+    };
+    let cube = match &t.cube {
+        None => d.cube,
+        Some(s) => CubeRender::ALL
+            .into_iter()
+            .find(|c| c.name() == s)
+            .ok_or_else(|| {
+                anyhow::anyhow!("{key}.cube: expected six_passes or geometry_shader, found \"{s}\"")
+            })?,
+    };
+    Ok(Some(Shadow {
+        resolution,
+        bias,
+        slope_bias,
+        normal_offset,
+        cull_front: t.cull_front.unwrap_or(d.cull_front),
+        pcf,
+        fit,
+        cube,
+    }))
+}
+
+fn names<const N: usize>(n: [&str; N]) -> String {
+    n.join(", ")
+}
+
+/// The `shadow` table as "save as" writes it: every knob, so the file says
+/// what the light does.
+pub fn shadow_table(s: &Shadow) -> toml::Table {
+    let mut t = toml::Table::new();
+    let f = |x: f32| toml::Value::Float(x.into());
+    t.insert(
+        "resolution".into(),
+        toml::Value::Integer(s.resolution.into()),
+    );
+    t.insert("bias".into(), f(s.bias));
+    t.insert("slope_bias".into(), f(s.slope_bias));
+    t.insert("normal_offset".into(), f(s.normal_offset));
+    t.insert("cull_front".into(), toml::Value::Boolean(s.cull_front));
+    t.insert("pcf".into(), toml::Value::String(s.pcf.name().into()));
+    t.insert("fit".into(), toml::Value::String(s.fit.name().into()));
+    t.insert("cube".into(), toml::Value::String(s.cube.name().into()));
+    t
+}
+
+/// A shadow-casting light limit: four 2D maps (directional and spot
+/// lights) and four cube maps (point lights), each on its own texture unit.
+pub const MAX_SHADOW_MAPS_2D: usize = 4;
+pub const MAX_SHADOW_CUBES: usize = 4;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Option<Shadow>> {
+        let t: toml::Table = toml::from_str(text).map_err(|e| anyhow::anyhow!("{e}"))?;
+        shadow("lights[0].shadow", t.get("shadow"))
+    }
+
+    #[test]
+    fn true_false_and_a_table() {
+        assert_eq!(parse("shadow = false").unwrap(), None);
+        assert_eq!(parse("shadow = true").unwrap(), Some(Shadow::default()));
+        let s = parse("shadow = { resolution = 512, pcf = \"5x5\", cull_front = true }")
+            .unwrap()
+            .unwrap();
+        assert_eq!((s.resolution, s.pcf, s.cull_front), (512, Pcf::Box5, true));
+        assert_eq!(s.bias, Shadow::default().bias);
+    }
+
+    #[test]
+    fn bad_values_name_their_key() {
+        for (text, key) in [
+            (
+                "shadow = { resolution = 1000 }",
+                "lights[0].shadow.resolution",
+            ),
+            ("shadow = { bias = -1.0 }", "lights[0].shadow.bias"),
+            (
+                "shadow = { slope_bias = nan }",
+                "lights[0].shadow.slope_bias",
+            ),
+            ("shadow = { pcf = \"7x7\" }", "lights[0].shadow.pcf"),
+            ("shadow = { fit = \"tight\" }", "lights[0].shadow.fit"),
+            ("shadow = { cube = \"one\" }", "lights[0].shadow.cube"),
+            (
+                "shadow = { size = 512 }",
+                "lights[0].shadow: unknown field `size`",
+            ),
+            (
+                "shadow = 1",
+                "lights[0].shadow: expected true, false or a table",
+            ),
+        ] {
+            let e = parse(text).unwrap_err().to_string();
+            assert!(e.contains(key), "{text}: {e}");
+        }
+    }
+
+    #[test]
+    fn the_saved_table_reads_back_the_same() {
+        let s = Shadow {
+            resolution: 256,
+            bias: 0.25,
+            slope_bias: 3.0,
+            normal_offset: 0.5,
+            cull_front: true,
+            pcf: Pcf::Poisson,
+            fit: ShadowFit::Scene,
+            cube: CubeRender::GeometryShader,
+        };
+        let text = format!("shadow = {}", toml::Value::Table(shadow_table(&s)));
+        assert_eq!(parse(&text).unwrap(), Some(s));
+    }
+}

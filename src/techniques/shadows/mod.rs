@@ -1,0 +1,3 @@
+//! Notes 01 §8.5, Shadow mapping; notes 02, Rendering Cast Shadows.
+
+pub mod shadow_map;

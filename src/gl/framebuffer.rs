@@ -129,6 +129,27 @@ impl Framebuffer {
         out
     }
 
+    /// Read the depth attachment as floats in 0..1 (row 0 = bottom).
+    pub fn read_depth_f32(&self) -> Vec<f32> {
+        let mut out = vec![0f32; (self.width * self.height) as usize];
+        unsafe {
+            self.gl
+                .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.id));
+            self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
+            self.gl.read_pixels(
+                0,
+                0,
+                self.width,
+                self.height,
+                glow::DEPTH_COMPONENT,
+                glow::FLOAT,
+                glow::PixelPackData::Slice(Some(bytemuck_f32(&mut out))),
+            );
+            self.gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
+        }
+        out
+    }
+
     /// Read the stencil buffer (GL_STENCIL_INDEX), one byte per pixel, row 0
     /// the top (PNG order).
     pub fn read_stencil_top_down(&self) -> Vec<u8> {

@@ -69,6 +69,13 @@ impl Renderer {
         }
     }
 
+    /// The finished frame's window depth, 0..1, bottom row first (what
+    /// glReadPixels gives): the shadow tests find each pixel's surface
+    /// point from it.
+    pub fn read_depth(&self) -> Vec<f32> {
+        self.output().read_depth_f32()
+    }
+
     /// The output's stencil buffer, one value per pixel, top row first
     /// (the stencil inspector; mirrors mark their regions there).
     pub fn read_stencil(&self) -> Vec<u8> {

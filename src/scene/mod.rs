@@ -16,6 +16,7 @@ pub mod knobs;
 mod light_grid;
 mod lights;
 mod mirrors;
+mod overrides;
 mod resolve;
 mod save;
 mod settings;
@@ -266,33 +267,6 @@ impl Scene {
     }
 }
 
-/// Set `table.key = value` in a parsed scene file, making tables as needed.
-fn apply_override(table: &mut toml::Table, assignment: &str) -> Result<()> {
-    let (key, value) = assignment
-        .split_once('=')
-        .ok_or_else(|| anyhow!("expected KEY=VALUE, such as render.cutoff=0.01"))?;
-    let (key, value) = (key.trim(), value.trim());
-    let value = match toml::from_str::<toml::Table>(&format!("v = {value}")) {
-        Ok(mut t) => t.remove("v").expect("the one key"),
-        Err(_) => toml::Value::String(value.to_string()),
-    };
-    let mut parts: Vec<&str> = key.split('.').collect();
-    let last = parts
-        .pop()
-        .filter(|k| !k.is_empty())
-        .ok_or_else(|| anyhow!("empty key"))?;
-    let mut t = table;
-    for p in parts {
-        t = t
-            .entry(p)
-            .or_insert_with(|| toml::Value::Table(toml::Table::new()))
-            .as_table_mut()
-            .ok_or_else(|| anyhow!("{p} is not a table"))?;
-    }
-    t.insert(last.to_string(), value);
-    Ok(())
-}
-
 /// The largest scene file gloss reads (scene files are small; this stops a
 /// wrong path such as /dev/zero from filling the memory).
 pub const MAX_SCENE_BYTES: u64 = 4 << 20;
@@ -329,7 +303,7 @@ impl Scene {
         let mut table: toml::Table = toml::from_str(text)
             .map_err(|e| anyhow!("{}: {}", path.display(), e.to_string().trim_end()))?;
         for o in overrides {
-            apply_override(&mut table, o).map_err(|e| anyhow!("--set {o}: {e}"))?;
+            overrides::apply_override(&mut table, o).map_err(|e| anyhow!("--set {o}: {e}"))?;
         }
         let file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
             anyhow!(

@@ -2,9 +2,11 @@
 //! as glsl/common/lighting.glsl, written once more so that tests can compare
 //! rendered pixels with `shade` below. Also the sRGB transfer functions the
 //! output uses, and (in `attenuation`) notes 04's attenuation and light-volume
-//! radius.
+//! radius. `bvh` and `triangle`: rays against world-space triangles.
 
 pub mod attenuation;
+pub mod bvh;
+pub mod triangle;
 
 use crate::scene::{Light, LightKind, Material};
 use glam::Vec3;

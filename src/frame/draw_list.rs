@@ -6,7 +6,7 @@
 //! passes skip the `transparent` items; the transparency pass draws them.
 
 use crate::frame::billboards::BillboardDraws;
-use crate::geometry::{self, MeshData};
+use crate::geometry::MeshData;
 use crate::gl::Gl;
 use crate::gl::mesh::Mesh;
 use crate::gl::program::Program;
@@ -74,7 +74,7 @@ impl DrawList {
             let mesh = match mesh_index.get(&o.mesh) {
                 Some(&i) => i,
                 None => {
-                    let data = mesh_data(&o.mesh)?;
+                    let data = crate::scene::meshes::mesh_data(&o.mesh)?;
                     bounds.push(mesh_bounds(&data));
                     meshes.push(Mesh::upload(gl, &data)?);
                     mesh_index.insert(o.mesh.clone(), meshes.len() - 1);
@@ -211,17 +211,4 @@ fn mesh_bounds(data: &MeshData) -> (Vec3, Vec3) {
     } else {
         (Vec3::ZERO, Vec3::ZERO)
     }
-}
-
-fn mesh_data(source: &MeshSource) -> Result<MeshData> {
-    Ok(match source {
-        MeshSource::Sphere => geometry::uv_sphere(32, 64),
-        MeshSource::Icosphere => geometry::icosphere(3),
-        MeshSource::Cube => geometry::cube(),
-        MeshSource::Plane => geometry::plane(2.0, 2.0, 1),
-        MeshSource::Cylinder => geometry::cylinder(48),
-        MeshSource::Cone => geometry::cone(48),
-        MeshSource::Torus => geometry::torus(1.0, 0.35, 64, 24),
-        MeshSource::Obj(path) => geometry::load_obj(path)?,
-    })
 }

@@ -1,4 +1,5 @@
-//! Image metrics and golden-image checks.
+//! Image metrics and golden-image checks; shadow masks from renders
+//! (`shadow_mask`) and their errors against the exact shadows (`shadow_metrics`).
 //!
 //! All metrics are in `0..1` units per channel (8-bit values divided by 255)
 //! and look at RGB only; alpha is ignored.
@@ -8,6 +9,8 @@
 //! changed files before committing them.
 
 mod golden;
+pub mod shadow_mask;
+pub mod shadow_metrics;
 
 pub use golden::{UPDATE_GOLDEN_ENV, check_golden};
 

@@ -7,7 +7,8 @@
 //!
 //! This folder: the scene types the renderer uses (here), the file format as
 //! written in TOML (`file`), checking it and turning it into a [`Scene`]
-//! (`resolve`), and the seeded many-lights generator (`light_grid`).
+//! (`resolve`), the seeded many-lights generator (`light_grid`), and the
+//! triangles behind each mesh source (`meshes`).
 
 mod alpha_test;
 mod billboards;
@@ -15,6 +16,7 @@ mod file;
 pub mod knobs;
 mod light_grid;
 mod lights;
+pub mod meshes;
 mod mirrors;
 mod overrides;
 mod resolve;

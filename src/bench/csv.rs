@@ -61,6 +61,9 @@ pub fn csv(rows: &[BenchRow]) -> String {
         "rmse_x255",
         "max_abs_x255",
         "pct_over_1",
+        "shadow_misclassified_pct",
+        "shadow_acne_pct",
+        "shadow_peter_panning",
         "clock",
     ] {
         header.push(h.to_string());
@@ -105,6 +108,11 @@ pub fn csv(rows: &[BenchRow]) -> String {
         c.push(csv_num(r.rmse * 255.0));
         c.push(csv_num(r.max_abs * 255.0));
         c.push(csv_num(r.pct_over_1));
+        let s = r.shadow.as_ref();
+        c.push(s.map_or_else(String::new, |s| csv_num(s.misclassified * 100.0)));
+        c.push(s.map_or_else(String::new, |s| csv_num(s.acne * 100.0)));
+        let gap = s.and_then(|s| s.peter_panning);
+        c.push(gap.map_or_else(String::new, |g| csv_num(g.into())));
         c.push(r.clock.clone());
         let _ = writeln!(out, "{}", join(c));
     }
@@ -163,5 +171,39 @@ mod tests {
         write_csv(&r, &p).unwrap();
         assert_eq!(std::fs::read_to_string(&p).unwrap(), text);
         let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
+#[cfg(test)]
+mod shadow_tests {
+    use super::*;
+    use crate::bench::table::{table, tests::rows};
+    use crate::image_compare::shadow_metrics::ShadowErrors;
+
+    #[test]
+    fn shadow_errors_get_their_columns_in_the_table_and_the_csv() {
+        let mut r = rows();
+        assert!(!table(&r).contains("acne %"));
+        r[0].shadow = Some(ShadowErrors {
+            misclassified: 0.0125,
+            acne: 0.5,
+            peter_panning: Some(0.25),
+            judged: 100,
+            judged_lit: 50,
+        });
+        let t = table(&r);
+        assert!(
+            t.contains("misclass %") && t.contains("1.250") && t.contains("50.000"),
+            "{t}"
+        );
+        let text = csv(&r);
+        let lines: Vec<&str> = text.lines().collect();
+        let header: Vec<&str> = lines[0].split(',').collect();
+        let at = |h: &str| header.iter().position(|x| *x == h).unwrap();
+        let first: Vec<&str> = lines[1].split(',').collect();
+        assert_eq!(first[at("shadow_misclassified_pct")], "1.25");
+        assert_eq!(first[at("shadow_peter_panning")], "0.25");
+        let second: Vec<&str> = lines[2].split(',').collect();
+        assert_eq!(second[at("shadow_acne_pct")], "");
     }
 }

@@ -17,6 +17,7 @@
 mod args;
 mod csv;
 mod plot;
+pub mod shadows;
 mod stats;
 mod table;
 mod variants;

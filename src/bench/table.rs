@@ -31,6 +31,9 @@ pub struct BenchRow {
     pub max_abs: f64,
     /// Percentage (`0..=100`) of pixels with any channel off by more than 1/255.
     pub pct_over_1: f64,
+    /// For a scene whose lights cast: its shadows against the exact ones
+    /// (src/bench/shadows.rs).
+    pub shadow: Option<crate::image_compare::shadow_metrics::ShadowErrors>,
 }
 
 /// Pass names over all rows, in order of first appearance.
@@ -128,6 +131,12 @@ pub fn table(rows: &[BenchRow]) -> String {
     for h in ["speed-up", "RMSE×255", "max×255", "% >1/255"] {
         header.push((h.into(), true));
     }
+    let any_shadow = rows.iter().any(|r| r.shadow.is_some());
+    if any_shadow {
+        for h in ["misclass %", "acne %", "gap"] {
+            header.push((h.into(), true));
+        }
+    }
     header.push(("clock".into(), false));
 
     let body: Vec<Vec<String>> = rows
@@ -162,6 +171,13 @@ pub fn table(rows: &[BenchRow]) -> String {
             cells.push(num(r.rmse * 255.0, 3));
             cells.push(num(r.max_abs * 255.0, 1));
             cells.push(num(r.pct_over_1, 3));
+            if any_shadow {
+                let s = r.shadow.as_ref();
+                cells.push(s.map_or_else(|| DASH.into(), |s| num(s.misclassified * 100.0, 3)));
+                cells.push(s.map_or_else(|| DASH.into(), |s| num(s.acne * 100.0, 3)));
+                let gap = s.and_then(|s| s.peter_panning);
+                cells.push(gap.map_or_else(|| DASH.into(), |g| num(g.into(), 4)));
+            }
             cells.push(r.clock.clone());
             cells
         })
@@ -238,6 +254,7 @@ pub(super) mod tests {
             rmse,
             max_abs: rmse * 4.0,
             pct_over_1: rmse * 1000.0,
+            shadow: None,
         };
         let mut v = vec![
             row("forward 64", "forward", 64, None, 8.0, 0.0),

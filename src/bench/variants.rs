@@ -89,9 +89,12 @@ pub(super) fn run(
             ..BenchRow::default()
         };
         let progress = format!("[{}/{}] {label}", i + 1, scenes.len());
-        rows.push(measure(
-            ctx, software, args, scene, &reference, row, &progress,
-        )?);
+        let mut row = measure(ctx, software, args, scene, &reference, row, &progress)?;
+        // A scene whose lights cast: its shadows against the exact ones.
+        if scene.lights.iter().any(|l| l.shadow.is_some()) {
+            row.shadow = Some(super::shadows::evaluate(ctx, scene)?.errors);
+        }
+        rows.push(row);
     }
     eprintln!();
     finish(&rows, args)

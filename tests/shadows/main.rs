@@ -15,3 +15,4 @@ mod common;
 
 mod hard_cases;
 mod paths;
+mod reference;

@@ -163,6 +163,12 @@ fn peter_panning(
         for k in [-1.0, 0.0, 1.0] {
             let c = corner + side * (0.1 * width * k);
             let line = pixel_line(w, h, pixel(c), pixel(c + along * length.min(2.0) * 0.8));
+            // Only a line whose contact point the camera sees (not hidden
+            // behind the object).
+            let seen = line.first().is_some_and(|&i| points[i].distance(c) < 0.05);
+            if !seen {
+                continue;
+            }
             if let Some(g) = contact_gap(mask, reference, points, &line, c) {
                 gaps.push(g);
             }

@@ -69,7 +69,11 @@ pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
             kq,
             inner_angle: l.inner_angle,
             outer_angle: l.outer_angle,
-            shadow: super::shadows::shadow(&key("shadow"), l.shadow.as_ref())?,
+            shadow: super::shadows::shadow(
+                &key("shadow"),
+                l.shadow.as_ref(),
+                kind == LightKind::Point,
+            )?,
         });
     }
     let casting = |point: bool| {

@@ -114,7 +114,7 @@ fn the_plan_has_one_shadow_pass_per_casting_light_and_none_without() {
     );
     let p = common::scene("shadows-point.toml");
     let passes = shadow_passes(&p);
-    assert!(passes[0].contains("cube 6 x 2048 x 2048"), "{passes:?}");
+    assert!(passes[0].contains("cube 6 x 1024 x 1024"), "{passes:?}");
     // The first passes of the frame, before the lighting.
     let plan = techniques::plan(&s);
     assert_eq!(plan.passes[0].name, "shadow map");

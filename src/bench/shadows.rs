@@ -36,6 +36,10 @@ pub struct ShadowEvaluation {
     pub reference: Vec<Visibility>,
     /// The three renders: with shadows, without, ambient only.
     pub images: [image::RgbaImage; 3],
+    /// The unshadowed render's window depth (bottom row first) and the
+    /// camera's inverse view-projection: each pixel's surface point.
+    pub depth: Vec<f32>,
+    pub inverse_view_projection: Mat4,
 }
 
 /// `scene` with only its first casting light.
@@ -96,6 +100,8 @@ pub fn evaluate(ctx: &Headless, scene: &Scene) -> Result<ShadowEvaluation> {
         mask,
         reference,
         images,
+        depth,
+        inverse_view_projection: inverse,
     })
 }
 

@@ -11,9 +11,8 @@
 //!   same value whichever face holds it (docs/shadows.md says why that
 //!   beats the perspective depth).
 //!
-//! The shadow pass (src/techniques/shadows/shadow_map.rs) draws into the
-//! maps; the lighting passes bind them with `bind` and call
-//! `shadow_visibility` in their shaders.
+//! The shadow pass (src/techniques/shadows/shadow_map.rs) draws the maps;
+//! lighting passes `bind` them and call `shadow_visibility` in their shaders.
 
 use crate::frame::draw_list::DrawList;
 use crate::gl::Gl;
@@ -77,21 +76,21 @@ pub fn casters(scene: &Scene) -> Vec<Caster> {
     for (light, l) in scene.lights.iter().enumerate() {
         let Some(shadow) = l.shadow else { continue };
         let is_cube = l.kind == LightKind::Point;
-        let slot = if is_cube {
-            cube += 1;
-            MAX_SHADOW_MAPS_2D + cube - 1
+        // 2D maps take slots 0..4, cubes 4..8 (the scene's check: four each).
+        let (count, first, limit) = if is_cube {
+            (&mut cube, MAX_SHADOW_MAPS_2D, MAX_SHADOW_CUBES)
         } else {
-            flat += 1;
-            flat - 1
+            (&mut flat, 0, MAX_SHADOW_MAPS_2D)
         };
-        if slot < SLOTS && (is_cube || slot < MAX_SHADOW_MAPS_2D) {
+        if *count < limit {
             out.push(Caster {
                 light,
-                slot,
+                slot: first + *count,
                 cube: is_cube,
                 shadow,
             });
         }
+        *count += 1;
     }
     out
 }
@@ -231,9 +230,28 @@ impl ShadowMaps {
         })
     }
 
-    /// The casters these maps were made for.
-    pub fn casters(&self) -> Vec<Caster> {
-        self.maps.iter().map(|(c, _)| c.clone()).collect()
+    /// Take `scene`'s casters (the demo edits them). The maps stay when
+    /// only what the lookup reads changed (the biases, culling, the fit);
+    /// a new PCF kernel re-sets the sampler's filter; a new light, kind,
+    /// resolution or way of drawing a cube allocates the maps anew.
+    pub fn take_casters(&mut self, gl: &Gl, scene: &Scene) -> Result<()> {
+        let new = casters(scene);
+        let same_textures = new.len() == self.maps.len()
+            && new.iter().zip(&self.maps).all(|(n, (o, _))| {
+                (n.light, n.slot, n.cube, n.shadow.resolution, n.shadow.cube)
+                    == (o.light, o.slot, o.cube, o.shadow.resolution, o.shadow.cube)
+            });
+        if !same_textures {
+            *self = ShadowMaps::new(gl, scene, self.max_lights)?;
+            return Ok(());
+        }
+        for (n, (o, map)) in new.into_iter().zip(&mut self.maps) {
+            if n.shadow.pcf != o.shadow.pcf {
+                as_shadow_sampler(gl, map, n.shadow.pcf);
+            }
+            *o = n;
+        }
+        Ok(())
     }
 
     /// Fit each light's view to the scene and the camera, and write the

@@ -11,7 +11,7 @@ use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, max_lights};
 use crate::frame::meshes::FrameMeshes;
 use crate::frame::plan::{FramePlan, Pass};
-use crate::frame::shadows::{ShadowMaps, casters};
+use crate::frame::shadows::ShadowMaps;
 use crate::frame::targets::{OUTPUT, TargetDesc, Targets};
 use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
 use crate::frame::uniforms::FrameUniforms;
@@ -184,9 +184,7 @@ impl Renderer {
                 self.height,
             )?;
         }
-        if casters(&self.scene) != self.shadows.casters() {
-            self.shadows = ShadowMaps::new(&self.gl, &self.scene, self.max_lights)?;
-        }
+        self.shadows.take_casters(&self.gl, &self.scene)?;
         self.lights = lights;
         self.upload_lights();
         self.draws.update_values(&self.scene);

@@ -11,11 +11,12 @@
 //!   (GL_DEPTH_CLAMP in the shadow pass).
 
 use crate::common;
-use glam::{Vec3, Vec4};
+use glam::Vec3;
 use gloss::frame::views::View;
 use gloss::gl::Headless;
 use gloss::gl::program::Sources;
 use gloss::image_compare::compare_rgba8;
+use gloss::lighting::shadow_reference::pixel_world_point;
 use gloss::renderer::Renderer;
 use gloss::scene::{Scene, ShadowFit};
 use image::RgbaImage;
@@ -49,7 +50,7 @@ fn without_shadows(scene: &Scene) -> Scene {
 }
 
 /// The world point each pixel shows (None: background), rows bottom-up.
-pub fn world_points(r: &Renderer, scene: &Scene) -> Vec<Option<Vec3>> {
+fn world_points(r: &Renderer, scene: &Scene) -> Vec<Option<Vec3>> {
     let depth = r.read_depth();
     let inverse = r
         .frame_uniforms(&scene.camera, &View::camera())
@@ -58,18 +59,7 @@ pub fn world_points(r: &Renderer, scene: &Scene) -> Vec<Option<Vec3>> {
     (0..w * h)
         .map(|i| {
             let d = depth[i];
-            if d >= 1.0 {
-                return None;
-            }
-            let (x, y) = ((i % w) as f32 + 0.5, (i / w) as f32 + 0.5);
-            let ndc = Vec4::new(
-                x / w as f32 * 2.0 - 1.0,
-                y / h as f32 * 2.0 - 1.0,
-                d * 2.0 - 1.0,
-                1.0,
-            );
-            let p = inverse * ndc;
-            Some(p.truncate() / p.w)
+            (d < 1.0).then(|| pixel_world_point(i % w, i / w, d, inverse, w, h))
         })
         .collect()
 }

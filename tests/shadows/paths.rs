@@ -149,3 +149,29 @@ fn every_shadow_pass_restores_the_gl_state() {
     let changed = common::state_left_changed(&ctx, &gs, 160, 90);
     assert!(changed.is_empty(), "{changed:?}");
 }
+
+#[test]
+fn editing_a_bias_keeps_the_maps_and_a_new_resolution_makes_them_anew() {
+    let ctx = common::context(common::backend());
+    let mut s = small("shadows-point.toml");
+    let mut r = crate::hard_cases::renderer(&ctx, &s);
+    let texture = r.shadows().maps[0].1.texture;
+    // A bias and a PCF kernel: the same texture, read with the new knobs.
+    let shadow = s.lights[0].shadow.as_mut().unwrap();
+    shadow.bias = 0.2;
+    shadow.pcf = Pcf::Box3;
+    r.set_scene_values(&s).unwrap();
+    let (caster, map) = &r.shadows().maps[0];
+    assert_eq!(map.texture, texture);
+    assert_eq!((caster.shadow.bias, caster.shadow.pcf), (0.2, Pcf::Box3));
+    r.render(&s.camera.clone()).unwrap();
+    let mut fresh = small("shadows-point.toml");
+    fresh.lights[0].shadow = s.lights[0].shadow;
+    let expected = common::render_with(&ctx, &fresh, Output::Srgb8).image;
+    let m = compare_rgba8(&r.read_image(), &expected, 0.0).unwrap();
+    assert_eq!(m.max_abs, 0.0, "kept maps draw what new ones would: {m}");
+    // A new resolution: a new map of that size.
+    s.lights[0].shadow.as_mut().unwrap().resolution = 256;
+    r.set_scene_values(&s).unwrap();
+    assert_eq!(r.shadows().maps[0].1.size, 256);
+}

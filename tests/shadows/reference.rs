@@ -163,12 +163,8 @@ fn a_sphere_over_a_plane_casts_the_analytic_conic() {
     let s = Scene::parse(text, std::path::Path::new("sphere-conic.toml")).unwrap();
     let ctx = common::context(common::backend());
     let e = evaluate(&ctx, &s).unwrap();
-    let r = crate::hard_cases::renderer(&ctx, &s);
-    let (w, h) = (r.width as usize, r.height as usize);
-    let depth = r.read_depth();
-    let inverse = r
-        .frame_uniforms(&s.camera, &gloss::frame::views::View::camera())
-        .inverse_view_projection;
+    let (w, h) = (e.mask.width, e.mask.height);
+    let (depth, inverse) = (&e.depth, e.inverse_view_projection);
     let (light, centre, radius) = (s.lights[0].position, glam::Vec3::new(0.0, 1.6, 0.0), 0.8);
     let (mut judged, mut wrong, mut shadowed) = (0, 0, 0);
     for y in 0..h {

@@ -197,6 +197,65 @@ fn demo_shows_the_mirrors_stencil_in_the_inspector() {
     }
 }
 
+/// The shadow-map inspector in the window: shadows-point, the pass
+/// inspector on its first view (I: the point light's cube map, listed
+/// first as its pass runs first), a screenshot (F12). The six faces lie in
+/// the cross (+y above; -x +z +x -z; -y below), each in grey with its
+/// depth varying over it, and the rest is the view's background.
+#[test]
+fn demo_shows_a_point_lights_shadow_cube_unfolded() {
+    use gloss::demo::shadow_views::{BACKGROUND, layout_rect};
+    let script = format!(
+        r#"
+        "{GLOSS}" --backend window --debug --frames 200000 shadows-point > gloss.log 2>&1 &
+        pid=$!
+        wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
+        xdotool windowfocus --sync "$wid"
+        sleep 3
+        for k in i F12; do xdotool key --clearmodifiers "$k"; sleep 2; done
+        xdotool key Escape
+        wait $pid
+        "#
+    );
+    let Some((dir, log)) = drive("gloss-demo-shadow-map", "1280x720x24", &script) else {
+        return;
+    };
+    let p = dir.join("gloss-screenshot-1.png");
+    let shot = image::open(&p)
+        .unwrap_or_else(|e| panic!("{}: {e}\n--- gloss.log ---\n{log}", p.display()))
+        .to_rgba8();
+    let (w, h) = shot.dimensions();
+    let [x0, y0, lw, _] = layout_rect(true, w as i32, h as i32);
+    let face = (lw / 4) as u32;
+    // A cell of the cross (column, row from the top) and its pixels.
+    let cell = |c: u32, r: u32| {
+        let (x, y) = (x0 as u32 + c * face, (h - y0 as u32 - 3 * face) + r * face);
+        (y + 2..y + face - 2)
+            .flat_map(move |y| (x + 2..x + face - 2).map(move |x| (x, y)))
+            .map(|(x, y)| shot.get_pixel(x, y).0)
+    };
+    for (c, r) in [(0, 0), (2, 0), (3, 0), (0, 2), (2, 2), (3, 2)] {
+        assert!(
+            cell(c, r).all(|p| p[..3] == BACKGROUND),
+            "cell ({c}, {r}) of {} is outside the cross",
+            p.display()
+        );
+    }
+    for (c, r) in [(1, 0), (0, 1), (1, 1), (2, 1), (3, 1), (1, 2)] {
+        let greys: Vec<u8> = cell(c, r).map(|p| p[0]).collect();
+        assert!(
+            cell(c, r).all(|p| p[0] == p[1] && p[1] == p[2]),
+            "face ({c}, {r}) of {} is grey",
+            p.display()
+        );
+        let spread = greys.iter().max().unwrap() - greys.iter().min().unwrap();
+        assert!(
+            spread >= 16,
+            "face ({c}, {r}): depth varies over it ({spread} levels)"
+        );
+    }
+}
+
 /// The window resized by the X server: very large (3840 x 2160), 1 x 1,
 /// unmapped and mapped again, and back to 1280 x 720, with GL debug output
 /// on: no GL error, no panic, and the last screenshot has the last size.

@@ -287,8 +287,12 @@ impl Demo {
 
 /// Lights as the panel edited them, checked as the scene loader checks a
 /// file's: attenuation coefficients valid, a direction that is not zero
-/// (made unit), a spot's inner angle within its outer one.
+/// (made unit), a spot's inner angle within its outer one, no more casting
+/// lights than there are shadow-map units (the panel refuses them already).
 fn checked(mut lights: Vec<Light>) -> Result<Vec<Light>> {
+    if let Some(e) = super::panel::too_many_casters(&lights) {
+        bail!("{e}");
+    }
     for (i, l) in lights.iter_mut().enumerate() {
         validate_attenuation(l.kc, l.kl, l.kq).map_err(|e| anyhow!("light {i}: {e}"))?;
         if l.direction.length() < 1e-6 {

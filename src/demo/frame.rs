@@ -3,6 +3,7 @@
 //! the GL state egui changed, swap; then carry out what the panel asked.
 
 use super::panel::PanelInput;
+use super::shadow_views::ShadowView;
 use super::{Demo, inspector, present, screenshot, to_i32};
 use crate::gl::framebuffer::Framebuffer;
 use anyhow::Result;
@@ -46,6 +47,8 @@ impl Demo {
         // 1. The image: the final frame, or the inspected target.
         let views = all_views(run);
         let view = run.panel.inspect.and_then(|i| views.get(i));
+        // A shadow-map view's depths shown as black and white.
+        let mut stretch = None;
         let shown = match view {
             None => run.renderer.output(),
             Some(v) => {
@@ -97,6 +100,9 @@ impl Demo {
                             fb,
                         );
                     }
+                    _ if let Some(s) = &v.shadow => {
+                        stretch = run.shadow_views.draw(s, run.renderer.shadows(), fb)?;
+                    }
                     (Some(which), _) => run.volume_views.draw(
                         &run.ctx.gl,
                         which,
@@ -146,6 +152,7 @@ impl Demo {
                 &run.renderer,
                 &camera,
                 &run.inspector,
+                &mut run.shadow_views,
                 run.panel.exposure,
             )?;
         }
@@ -167,6 +174,7 @@ impl Demo {
             thumbnails: &run.thumbnails.textures,
             size: (run.renderer.width, run.renderer.height),
             gl_info: &run.gl_info,
+            stretch,
         };
         let mut actions = Vec::new();
         let panel = &mut run.panel;
@@ -229,10 +237,12 @@ impl Demo {
     }
 }
 
-/// The inspector's views: the plan's targets, the light volumes, and the
-/// difference image of the last comparison.
+/// The inspector's views: the shadow maps, the plan's targets, the light
+/// volumes, and the difference image of the last comparison.
 pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
-    let mut views = inspector::views(&run.renderer.plan, has_volumes(&run.renderer));
+    let r = &run.renderer;
+    let shadows = ShadowView::of(&r.shadows().casters(), |i| r.scene.lights[i].kind);
+    let mut views = inspector::views(&r.plan, has_volumes(r), &shadows);
     if run.comparison.is_some()
         && let Some(first) = views.first().cloned()
     {
@@ -242,6 +252,7 @@ pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
             difference: true,
             volumes: None,
             stencil: false,
+            shadow: None,
             ..first
         });
     }

@@ -2,8 +2,10 @@
 //! drawn over the window so that it can be seen (normals as colours, depth
 //! linearised, light with an exposure), by a full-screen pass with
 //! glsl/demo/inspect.frag. The list of views comes from the plan, so a
-//! technique's targets appear here as soon as it declares them.
+//! technique's targets appear here as soon as it declares them; each
+//! casting light's shadow map is listed too (src/demo/shadow_views.rs).
 
+use super::shadow_views::ShadowView;
 use super::volume_views::VolumeView;
 use crate::frame::plan::FramePlan;
 use crate::frame::targets::{Depth, Targets, format_name};
@@ -51,6 +53,8 @@ pub struct View {
     /// The stencil values of the depth-stencil attachment (read back: GL 3.3
     /// cannot sample stencil), each value its own colour.
     pub stencil: bool,
+    /// A casting light's shadow map instead of an attachment.
+    pub shadow: Option<ShadowView>,
 }
 
 impl View {
@@ -58,6 +62,9 @@ impl View {
     pub fn label(&self) -> String {
         if let Some(v) = self.volumes {
             return v.label().to_string();
+        }
+        if let Some(s) = &self.shadow {
+            return s.label();
         }
         if self.difference {
             return "difference to the forward reference, x8".to_string();
@@ -86,10 +93,23 @@ impl View {
     }
 }
 
-/// Every view of a plan's targets, in the plan's order; then, when some
-/// light has a volume, the three views of the volumes.
-pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
-    let mut v = Vec::new();
+/// Every view of a frame: the shadow map of each casting light (`shadows`:
+/// drawn first in the frame), the plan's targets in the plan's order; then,
+/// when some light has a volume, the three views of the volumes.
+pub fn views(plan: &FramePlan, has_volumes: bool, shadows: &[ShadowView]) -> Vec<View> {
+    let mut v: Vec<View> = (shadows.iter())
+        .map(|s| View {
+            target: "shadow map",
+            attachment: "depth",
+            color_index: None,
+            format: crate::gl::depth_map::FORMAT,
+            mode: Mode::Depth,
+            volumes: None,
+            difference: false,
+            stencil: false,
+            shadow: Some(*s),
+        })
+        .collect();
     for t in &plan.targets {
         for (i, &(name, format)) in t.colors.iter().enumerate() {
             let color = |mode| View {
@@ -101,6 +121,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 volumes: None,
                 difference: false,
                 stencil: false,
+                shadow: None,
             };
             match name {
                 "normal_shininess" => {
@@ -126,6 +147,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 volumes: None,
                 difference: false,
                 stencil: false,
+                shadow: None,
             });
             // The output's stencil: where mirrors mark their regions.
             if format == glow::DEPTH24_STENCIL8 && t.name == crate::frame::targets::OUTPUT {
@@ -138,6 +160,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                     volumes: None,
                     difference: false,
                     stencil: true,
+                    shadow: None,
                 });
             }
         }
@@ -157,6 +180,7 @@ pub fn views(plan: &FramePlan, has_volumes: bool) -> Vec<View> {
                 volumes: Some(which),
                 difference: false,
                 stencil: false,
+                shadow: None,
             });
         }
     }

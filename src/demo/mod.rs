@@ -6,7 +6,8 @@
 //!
 //! The files: `panel/` (the egui panel: scene, techniques and their
 //! settings, inspector, timings, plan, keys), `actions` (carrying out what
-//! the panel and the keys ask), `inspector` (the view pass), `keys`,
+//! the panel and the keys ask), `inspector` (the view pass; its shadow-map
+//! and light-volume views in `shadow_views` and `volume_views`), `keys`,
 //! `screenshot`, `orbit` (the camera), `shaders` (live reload of glsl/),
 //! `present` (the blit to the window and the state restore after egui).
 
@@ -24,6 +25,7 @@ mod present;
 pub use present::restore_after_egui;
 mod screenshot;
 mod shaders;
+pub mod shadow_views;
 mod thumbnails;
 pub mod volume_views;
 
@@ -122,6 +124,7 @@ struct Running {
     panel: PanelState,
     inspector: Inspector,
     volume_views: volume_views::VolumeViews,
+    shadow_views: shadow_views::ShadowViews,
     thumbnails: thumbnails::Thumbnails,
     /// The last "compare with reference", until the settings or scene change.
     comparison: Option<compare::Comparison>,
@@ -195,6 +198,7 @@ impl Demo {
             panel,
             inspector: Inspector::new(&ctx.gl, &self.sources)?,
             volume_views: volume_views::VolumeViews::new(&ctx.gl, &self.sources)?,
+            shadow_views: shadow_views::ShadowViews::new(&ctx.gl, &self.sources)?,
             comparison: None,
             thumbnails: thumbnails::Thumbnails::new(),
             inspect_fb: None,

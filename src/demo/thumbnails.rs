@@ -1,10 +1,12 @@
-//! The inspector's thumbnail strip: every attachment view of the frame at
-//! 160 x 90, drawn by the inspector into a small framebuffer of its own,
+//! The inspector's thumbnail strip: every attachment and shadow-map view of
+//! the frame at 160 x 90, drawn by the inspector (the shadow maps by
+//! src/demo/shadow_views.rs) into a small framebuffer of its own,
 //! read back and handed to egui as its own textures (so egui owns them and
 //! gloss's framebuffers stay gloss's). Redrawn twice a second while the
 //! panel shows them.
 
 use super::inspector::{Inspector, View};
+use super::shadow_views::ShadowViews;
 use crate::gl::Gl;
 use crate::gl::framebuffer::Framebuffer;
 use crate::renderer::Renderer;
@@ -41,6 +43,7 @@ impl Thumbnails {
         renderer: &Renderer,
         camera: &Camera,
         inspector: &Inspector,
+        shadow_views: &mut ShadowViews,
         exposure: f32,
     ) -> Result<()> {
         let stale = self
@@ -66,7 +69,12 @@ impl Thumbnails {
                 self.textures[i] = None;
                 continue;
             }
-            inspector.draw(gl, v, renderer.targets(), camera, exposure, fb);
+            match &v.shadow {
+                Some(s) => {
+                    shadow_views.draw(s, renderer.shadows(), fb)?;
+                }
+                None => inspector.draw(gl, v, renderer.targets(), camera, exposure, fb),
+            }
             let img = fb.read_rgba8_top_down(0);
             let image = egui::ColorImage::from_rgba_unmultiplied(
                 [SIZE.0 as usize, SIZE.1 as usize],

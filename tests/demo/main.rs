@@ -10,4 +10,6 @@ mod panel;
 mod robustness;
 mod save;
 mod settings;
+mod shadow_knobs;
+mod shadow_views;
 mod volumes;

@@ -34,7 +34,7 @@ fn the_panel_is_drawn_and_leaves_the_scene_and_the_gl_state_as_they_were() {
     let egui_ctx = egui::Context::default();
     let mut painter = egui_glow::Painter::new(gl.clone(), "", None, false).unwrap();
     let mut panel = PanelState::new("scenes/mixed-lights.toml");
-    let views = views(&r.plan, true);
+    let views = views(&r.plan, true, &[]);
     let shipped = gloss::assets::shipped_scenes();
     let input = PanelInput {
         scene: &scene,
@@ -49,6 +49,7 @@ fn the_panel_is_drawn_and_leaves_the_scene_and_the_gl_state_as_they_were() {
         gl_info: "headless test",
         thumbnails: &[],
         size: (w as i32, h as i32),
+        stretch: None,
     };
     let raw = egui::RawInput {
         screen_rect: Some(egui::Rect::from_min_size(

@@ -278,3 +278,77 @@ fn billboard_edits_survive_save_as() {
         .read_image();
     common::assert_close("save-billboards", &b, &a, &EXACT);
 }
+
+#[test]
+fn shadow_knobs_survive_save_as() {
+    // The panel's shadow knobs: every one off its default on a directional,
+    // a point and a spot light; "casts shadows" turned on where no light
+    // cast, and off where one did.
+    use gloss::scene::{CubeRender, Pcf, Shadow, ShadowFit};
+    let ctx = common::context(common::backend());
+    let dir = std::env::temp_dir().join("gloss-save-shadows");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let knobs = |resolution, pcf, fit, cube| Shadow {
+        resolution,
+        bias: 0.013,
+        slope_bias: 2.75,
+        normal_offset: 0.4,
+        cull_front: true,
+        pcf,
+        fit,
+        cube,
+    };
+    let mut directional = common::scene("shadows-directional.toml");
+    directional.lights[0].shadow = Some(knobs(
+        512,
+        Pcf::Poisson,
+        ShadowFit::Scene,
+        CubeRender::SixPasses,
+    ));
+    let mut point = common::scene("shadows-point.toml");
+    point.lights[0].shadow = Some(knobs(
+        256,
+        Pcf::Box3,
+        ShadowFit::Visible,
+        CubeRender::GeometryShader,
+    ));
+    let mut spot = common::scene("shadows-spot.toml");
+    spot.lights[0].shadow = Some(knobs(
+        1024,
+        Pcf::None,
+        ShadowFit::Scene,
+        CubeRender::SixPasses,
+    ));
+    let mut on = common::scene("default.toml");
+    assert!(on.lights.iter().all(|l| l.shadow.is_none()));
+    on.lights[3].shadow = Some(knobs(
+        128,
+        Pcf::Box5,
+        ShadowFit::Visible,
+        CubeRender::SixPasses,
+    ));
+    let mut off = common::scene("shadows-point.toml");
+    off.lights[0].shadow = None;
+    for (name, scene) in [
+        ("directional", &mut directional),
+        ("point", &mut point),
+        ("spot", &mut spot),
+        ("on", &mut on),
+        ("off", &mut off),
+    ] {
+        scene.render.size = (160, 90);
+        let path = dir.join(format!("{name}.toml"));
+        scene.save_as(&path).unwrap();
+        let mut again = Scene::load(&path).unwrap();
+        again.render.size = scene.render.size;
+        assert_eq!(again.lights, scene.lights, "{name}");
+        let a = render_scene(&ctx, scene, Output::Srgb8)
+            .unwrap()
+            .read_image();
+        let b = render_scene(&ctx, &again, Output::Srgb8)
+            .unwrap()
+            .read_image();
+        common::assert_close(&format!("save-shadows-{name}"), &b, &a, &EXACT);
+    }
+}

@@ -9,10 +9,12 @@
 //! appears here through its one registration.
 
 mod knob;
+mod shadow_knobs;
 mod structure;
 mod timings;
 mod values;
 
+pub use shadow_knobs::too_many_casters;
 pub use timings::Timings;
 
 use super::inspector::View;
@@ -77,6 +79,9 @@ pub struct PanelInput<'a> {
     pub gl_info: &'a str,
     /// The frame's size in pixels (every target has it).
     pub size: (i32, i32),
+    /// The least and greatest value below 1.0 that the shadow-map view
+    /// shown stretches to black and white.
+    pub stretch: Option<(f32, f32)>,
 }
 
 /// What the panel remembers between frames.
@@ -296,7 +301,15 @@ impl PanelState {
                 if let Some(c) = input.comparison {
                     ui.label(c);
                 }
-                if let Some(v) = current.and_then(|i| input.views.get(i)) {
+                if let Some(s) = current.and_then(|i| input.views.get(i)?.shadow) {
+                    let n = s.resolution;
+                    let (lo, hi) = input.stretch.unwrap_or((0.0, 1.0));
+                    ui.small(format!(
+                        "light {}'s map, {n} x {n}{} DEPTH_COMPONENT32F: black {lo:.4}, white {hi:.4}",
+                        s.light,
+                        if s.cube() { " x 6" } else { "" }
+                    ));
+                } else if let Some(v) = current.and_then(|i| input.views.get(i)) {
                     let fb = input
                         .plan
                         .target(v.target)

@@ -1,10 +1,11 @@
 //! The scene's lights, materials and objects, editable live: each light's
-//! type, colour, intensity, position, direction, Kc/Kl/Kq attenuation and
-//! cone angles; the light grid's parameters; each material's diffuse and
-//! specular colours, shininess, opacity and texture; each object's
-//! transform, mesh, material and parent; the camera's lens.
+//! type, colour, intensity, position, direction, Kc/Kl/Kq attenuation,
+//! cone angles and shadow knobs (shadow_knobs.rs); the light grid's
+//! parameters; each material's diffuse and specular colours, shininess,
+//! opacity and texture; each object's transform, mesh, material and
+//! parent; the camera's lens.
 
-use super::structure;
+use super::{shadow_knobs, structure};
 use crate::scene::{Camera, LightGrid, LightKind, Object, Projection, Scene};
 use glam::Vec3;
 
@@ -68,7 +69,19 @@ pub fn lights(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::Ligh
                                 (LightKind::Point, "point"),
                                 (LightKind::Spot, "spot"),
                             ] {
-                                changed |= ui.selectable_value(&mut l.kind, k, word).changed();
+                                // A casting light may not move into a full group.
+                                let refusal = (l.shadow.is_some())
+                                    .then(|| shadow_knobs::refused(&scene.lights, i, k))
+                                    .flatten();
+                                let button = egui::Button::selectable(l.kind == k, word);
+                                let r = ui.add_enabled(refusal.is_none(), button);
+                                if r.clicked() && l.kind != k {
+                                    l.kind = k;
+                                    changed = true;
+                                }
+                                if let Some(why) = refusal {
+                                    r.on_disabled_hover_text(why);
+                                }
                             }
                         });
                         changed |= vec3(ui, "colour", &mut l.color, 0.0..=10.0);
@@ -88,6 +101,7 @@ pub fn lights(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::Ligh
                             changed |= number(ui, "inner angle", &mut l.inner_angle, 0.0..=88.0);
                             changed |= number(ui, "outer angle", &mut l.outer_angle, 0.0..=88.0);
                         }
+                        changed |= shadow_knobs::show(ui, i, l, &scene.lights);
                     });
             }
         });

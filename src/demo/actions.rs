@@ -101,6 +101,7 @@ impl Demo {
             Action::Inspect(view) => {
                 if let Some(run) = self.running.as_mut() {
                     run.panel.inspect = view;
+                    run.inspected = None;
                 }
                 Ok(())
             }

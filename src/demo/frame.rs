@@ -46,6 +46,7 @@ impl Demo {
 
         // 1. The image: the final frame, or the inspected target.
         let views = all_views(run);
+        run.panel.inspect = inspector::follow(run.panel.inspect, &mut run.inspected, &views);
         let view = run.panel.inspect.and_then(|i| views.get(i));
         // A shadow-map view's depths shown as black and white.
         let mut stretch = None;
@@ -241,7 +242,9 @@ impl Demo {
 /// volumes, and the difference image of the last comparison.
 pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
     let r = &run.renderer;
-    let shadows = ShadowView::of(&r.shadows().casters(), |i| r.scene.lights[i].kind);
+    let shadows = ShadowView::of(r.shadows().maps.iter().map(|(c, _)| c), |i| {
+        r.scene.lights[i].kind
+    });
     let mut views = inspector::views(&r.plan, has_volumes(r), &shadows);
     if run.comparison.is_some()
         && let Some(first) = views.first().cloned()

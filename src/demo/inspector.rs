@@ -58,6 +58,24 @@ pub struct View {
 }
 
 impl View {
+    /// Whether two views show the same thing. A shadow map stays its
+    /// light's map when its resolution changes.
+    pub fn same_as(&self, other: &View) -> bool {
+        let key = |v: &View| {
+            let shadow = v.shadow.map(|s| s.light);
+            (
+                v.target,
+                v.attachment,
+                v.color_index,
+                v.volumes,
+                v.difference,
+                v.stencil,
+                shadow,
+            )
+        };
+        key(self) == key(other)
+    }
+
     /// "gbuffer.normal_shininess (RGBA16F)" and what the view shows.
     pub fn label(&self) -> String {
         if let Some(v) = self.volumes {
@@ -277,4 +295,21 @@ impl Inspector {
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
         }
     }
+}
+
+/// The inspected view, kept by what it shows rather than by its place in the
+/// list: adding or removing a caster shifts every view after it. `index` is
+/// the panel's choice and `kept` the view it showed last frame (None just
+/// after a new choice). Returns the index to show, None when the view has
+/// gone, and makes `kept` that view.
+pub fn follow(index: Option<usize>, kept: &mut Option<View>, views: &[View]) -> Option<usize> {
+    let found = match (index, kept.as_ref()) {
+        (None, _) => None,
+        (Some(i), Some(k)) if !views.get(i).is_some_and(|v| v.same_as(k)) => {
+            views.iter().position(|v| v.same_as(k))
+        }
+        (Some(i), _) => (i < views.len()).then_some(i),
+    };
+    *kept = found.map(|i| views[i].clone());
+    found
 }

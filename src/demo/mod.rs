@@ -128,6 +128,8 @@ struct Running {
     thumbnails: thumbnails::Thumbnails,
     /// The last "compare with reference", until the settings or scene change.
     comparison: Option<compare::Comparison>,
+    /// The view the inspector showed last frame (see `inspector::follow`).
+    inspected: Option<inspector::View>,
     /// What the inspector draws into (never one of the renderer's targets).
     inspect_fb: Option<Framebuffer>,
     /// The panel, drawn when due and laid over every frame.
@@ -201,6 +203,7 @@ impl Demo {
             shadow_views: shadow_views::ShadowViews::new(&ctx.gl, &self.sources)?,
             comparison: None,
             thumbnails: thumbnails::Thumbnails::new(),
+            inspected: None,
             inspect_fb: None,
             panel_layer: panel_layer::PanelLayer::new(&ctx.gl, &self.sources)?,
             shipped: crate::assets::shipped_scenes(),

@@ -58,8 +58,11 @@ pub struct ShadowView {
 
 impl ShadowView {
     /// The view of each caster, in light order.
-    pub fn of(casters: &[Caster], kind: impl Fn(usize) -> LightKind) -> Vec<ShadowView> {
-        (casters.iter())
+    pub fn of<'a>(
+        casters: impl IntoIterator<Item = &'a Caster>,
+        kind: impl Fn(usize) -> LightKind,
+    ) -> Vec<ShadowView> {
+        (casters.into_iter())
             .map(|c| ShadowView {
                 light: c.light,
                 kind: kind(c.light),
@@ -145,7 +148,7 @@ impl ShadowViews {
     }
 
     /// Draw light `view.light`'s map into `into`, full size (only the
-    /// background when that light has no map). Returns the least and
+    /// background when that light has no map this frame). Returns the least and
     /// greatest value below 1.0 shown, which became black and white.
     pub fn draw(
         &mut self,
@@ -158,7 +161,11 @@ impl ShadowViews {
         let layout = &self.layouts[at];
         let gl = &self.gl;
         let p = &self.program;
-        let map = maps.maps.iter().find(|(c, _)| c.light == view.light);
+        // A map whose light had nothing to cast onto this frame (view None)
+        // holds an old frame's depths that no lookup reads: show none.
+        let map = (maps.maps.iter().zip(&maps.views))
+            .find(|((c, _), v)| c.light == view.light && v.is_some())
+            .map(|(m, _)| m);
         let cube = map.is_some_and(|(c, _)| c.cube);
         let rect = layout_rect(cube, w, h).map(|v| v as f32);
         unsafe {

@@ -41,7 +41,9 @@ fn inspect(ctx: &gloss::gl::Headless, name: &str) -> Inspected {
     let mut r = Renderer::new(gl, &ctx.debug, &scene, &Sources::Embedded, 160, 90).unwrap();
     r.render(&scene.camera).unwrap();
     let frame = r.read_image();
-    let shadows = ShadowView::of(&r.shadows().casters(), |i| scene.lights[i].kind);
+    let shadows = ShadowView::of(r.shadows().maps.iter().map(|(c, _)| c), |i| {
+        scene.lights[i].kind
+    });
     let all = views(&r.plan, false, &shadows);
     let listed: Vec<ShadowView> = all.iter().filter_map(|v| v.shadow).collect();
     let casting: Vec<usize> = (0..scene.lights.len())
@@ -211,4 +213,45 @@ fn a_cube_map_is_unfolded_into_the_cross_each_face_as_gl_stores_it() {
             "face {face}: the depth varies over it ({spread} grey levels)"
         );
     }
+}
+
+/// The inspector keeps showing the same light's map when a caster before it
+/// is removed (its place in the list moves), when its resolution changes,
+/// and shows the output once its light stops casting. No GL needed.
+#[test]
+fn the_inspected_shadow_map_follows_its_light_when_the_list_shifts() {
+    use gloss::demo::inspector::follow;
+    let scene = common::scene("shadows-spot.toml");
+    let plan = gloss::techniques::plan(&scene);
+    let caster = |light, resolution| ShadowView {
+        light,
+        kind: LightKind::Spot,
+        resolution,
+    };
+    let before = views(&plan, false, &[caster(0, 512), caster(2, 512)]);
+    let mut kept = None;
+    // A new choice: light 2's map, second in the list.
+    assert_eq!(follow(Some(1), &mut kept, &before), Some(1));
+    assert_eq!(
+        kept.as_ref().and_then(|v| v.shadow).map(|s| s.light),
+        Some(2)
+    );
+    // Light 0 stops casting: light 2's map is now first.
+    let after = views(&plan, false, &[caster(2, 512)]);
+    assert_eq!(follow(Some(1), &mut kept, &after), Some(0));
+    // Its resolution changes: still the same view.
+    let finer = views(&plan, false, &[caster(2, 2048)]);
+    assert_eq!(follow(Some(0), &mut kept, &finer), Some(0));
+    assert_eq!(
+        kept.as_ref().and_then(|v| v.shadow).map(|s| s.resolution),
+        Some(2048)
+    );
+    // Light 2 stops casting too: nothing to show but the output.
+    let none = views(&plan, false, &[]);
+    assert_eq!(follow(Some(0), &mut kept, &none), None);
+    assert!(kept.is_none());
+    // Without a shadow map the attachments keep their places.
+    let first = none[0].clone();
+    assert_eq!(follow(Some(0), &mut kept, &none), Some(0));
+    assert!(kept.as_ref().is_some_and(|v| v.same_as(&first)));
 }

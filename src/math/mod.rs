@@ -33,6 +33,7 @@ pub mod shadow;
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 pub mod depth;
+pub mod gaussian;
 
 /// Builds a matrix from its four rows, written as they appear on paper.
 /// glam stores columns, so this is `from_cols_array_2d(rows).transpose()`.

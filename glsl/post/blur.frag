@@ -2,8 +2,9 @@
 // One direction of a separable blur, a stage of the post chain (notes 01
 // §9; notes 03 "Blur Pass": a horizontal pass, then a vertical one).
 // Taps are one-sided: the centre, then each offset read on both sides.
-// Read through a linear, clamp-to-edge sampler: a whole-texel offset reads
-// one texel exactly, a fractional one two texels with their two weights.
+// Read through a clamp-to-edge sampler: GL_NEAREST for direct taps (whole
+// texels), GL_LINEAR for linear taps (a fractional offset reads two texels
+// with their two weights).
 uniform sampler2D u_image;   // the previous image
 uniform vec2 u_direction;    // (1, 0): along the rows; (0, 1): the columns
 uniform int u_taps;          // how many of the arrays below are used

@@ -11,14 +11,15 @@ uniform int u_taps;          // how many of the arrays below are used
 uniform float u_offset[128]; // texels from the centre (u_offset[0] = 0)
 uniform float u_weight[128]; // each side's weight; all sum to 1
 out vec4 frag_color;
+#include "post/finite.glsl"
 
 void main() {
     vec2 size = vec2(textureSize(u_image, 0));
     vec2 uv = gl_FragCoord.xy / size;
-    vec3 sum = u_weight[0] * texture(u_image, uv).rgb;
+    vec3 sum = u_weight[0] * finite(texture(u_image, uv).rgb);
     for (int i = 1; i < u_taps; i++) {
         vec2 d = u_offset[i] * u_direction / size;
-        sum += u_weight[i] * (texture(u_image, uv + d).rgb + texture(u_image, uv - d).rgb);
+        sum += u_weight[i] * (finite(texture(u_image, uv + d).rgb) + finite(texture(u_image, uv - d).rgb));
     }
     frag_color = vec4(sum, 1.0);
 }

@@ -146,10 +146,19 @@ fn render_to_png(
     }
     // Write to a temporary name and rename, so a failed write never leaves half a file
     // where the user's old picture was.
+    // On any failure the temporary file goes too.
+    if out.is_dir() {
+        bail!("cannot write {}: it is a directory", out.display());
+    }
     let tmp = out.with_extension("png.tmp");
-    img.save_with_format(&tmp, image::ImageFormat::Png)
-        .with_context(|| format!("cannot write {}", out.display()))?;
-    std::fs::rename(&tmp, out).with_context(|| format!("cannot write {}", out.display()))?;
+    let written = img
+        .save_with_format(&tmp, image::ImageFormat::Png)
+        .map_err(anyhow::Error::from)
+        .and_then(|()| std::fs::rename(&tmp, out).map_err(anyhow::Error::from));
+    if let Err(e) = written {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(e.context(format!("cannot write {}", out.display())));
+    }
     Ok(())
 }
 

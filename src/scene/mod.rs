@@ -26,6 +26,7 @@ mod resolve;
 mod save;
 mod settings;
 pub mod shadows;
+mod text;
 mod views;
 
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
@@ -311,10 +312,11 @@ impl Scene {
             return Scene::parse(text, path);
         }
         let mut table: toml::Table = toml::from_str(text)
-            .map_err(|e| anyhow!("{}: {}", path.display(), e.to_string().trim_end()))?;
+            .map_err(|e| anyhow!("{}: {}", path.display(), text::quoted(&e.to_string())))?;
         for o in overrides {
             overrides::apply_override(&mut table, o).map_err(|e| anyhow!("--set {o}: {e}"))?;
         }
+        text::floats_in_f32_range(&table, "").map_err(|e| anyhow!("{}: {e}", path.display()))?;
         let file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
             anyhow!(
                 "{} with --set {}: {}",
@@ -328,8 +330,12 @@ impl Scene {
 
     /// Parse scene text; `path` names the file in messages and anchors relative paths.
     pub fn parse(text: &str, path: &Path) -> Result<Scene> {
+        if let Ok(table) = toml::from_str::<toml::Table>(text) {
+            text::floats_in_f32_range(&table, "")
+                .map_err(|e| anyhow!("{}: {e}", path.display()))?;
+        }
         let file: SceneFile = toml::from_str(text)
-            .map_err(|e| anyhow!("{}: {}", path.display(), e.to_string().trim_end()))?;
+            .map_err(|e| anyhow!("{}: {}", path.display(), text::quoted(&e.to_string())))?;
         resolve(file, path).map_err(|e| anyhow!("{}: {e}", path.display()))
     }
 

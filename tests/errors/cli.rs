@@ -52,6 +52,24 @@ fn failed_render_keeps_existing_output() {
     assert!(!dir.join("out.png.tmp").exists());
 }
 
+/// `-o` naming a directory is refused before anything is written, and
+/// leaves no temporary file beside it.
+#[test]
+fn render_into_a_directory_leaves_nothing_behind() {
+    let dir = temp_dir("render_into_a_directory_leaves_nothing_behind");
+    let good = write(&dir, "good.toml", BASE);
+    let target = dir.join("pictures");
+    std::fs::create_dir_all(&target).unwrap();
+    let stderr = render_fails(&good, &target);
+    contains_all(&stderr, &["pictures", "is a directory"]);
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+}
+
 #[test]
 fn cli_render_size_zero() {
     let dir = temp_dir("cli_render_size_zero");

@@ -336,3 +336,33 @@ fn material_depth_func_unknown_word() {
         ],
     );
 }
+
+/// A number beyond f32's range is named as such, not as the "inf" it
+/// would become.
+#[test]
+fn scene_float_out_of_f32_range() {
+    let msg = scene_fails(
+        "scene_float_out_of_f32_range",
+        &base_with("[camera]", "[camera]\nfov_y = 1e39"),
+        &["camera.fov_y", "1e39", "out of range of a 32-bit float"],
+    );
+    assert!(!msg.contains("inf"), "{msg}");
+    scene_fails(
+        "scene_float_out_of_f32_range_in_an_array",
+        &base_with("position = [1.0, 2.0, -0.5]", "position = [1.0, -1e300, -0.5]"),
+        &["lights[0].position[1]", "out of range of a 32-bit float"],
+    );
+}
+
+/// A hostile file whose offending line is huge (deep nesting) gets a
+/// message of bounded length, not the whole line quoted back.
+#[test]
+fn scene_parse_error_message_is_capped() {
+    let deep = format!(
+        "{BASE}\nx = {}{}\n",
+        "[".repeat(100_000),
+        "]".repeat(100_000)
+    );
+    let msg = scene_fails("scene_parse_error_message_is_capped", &deep, &["left out"]);
+    assert!(msg.len() < 3000, "{} characters", msg.len());
+}

@@ -1,0 +1,49 @@
+//! Reading a scene file's text safely: the parser's messages cut to a
+//! length a terminal can show, and every number checked against the range
+//! of the 32-bit floats gloss computes in.
+
+use anyhow::{Result, bail};
+
+/// The most of a parser's message gloss prints: the TOML parser quotes the
+/// offending line, which in a hostile file can be megabytes long.
+pub const MAX_MESSAGE_CHARS: usize = 2000;
+
+/// A parser's message, trimmed, and cut at `MAX_MESSAGE_CHARS` with a note
+/// of how much was left out.
+pub(super) fn quoted(message: &str) -> String {
+    let m = message.trim_end();
+    match m.char_indices().nth(MAX_MESSAGE_CHARS) {
+        None => m.to_string(),
+        Some((cut, _)) => format!(
+            "{}... ({} more characters of the parser's message left out)",
+            &m[..cut],
+            m[cut..].chars().count()
+        ),
+    }
+}
+
+/// Every float of the file fits a 32-bit float (gloss's numbers are f32):
+/// `1e39` would otherwise become infinity and be reported as "inf".
+pub(super) fn floats_in_f32_range(table: &toml::Table, prefix: &str) -> Result<()> {
+    fn check(v: &toml::Value, key: &str) -> Result<()> {
+        match v {
+            toml::Value::Float(f) if f.is_finite() && f.abs() > f64::from(f32::MAX) => bail!(
+                "{key}: {f:e} is out of range of a 32-bit float (at most {:e} in size)",
+                f32::MAX
+            ),
+            toml::Value::Array(a) => {
+                (a.iter().enumerate()).try_for_each(|(i, x)| check(x, &format!("{key}[{i}]")))
+            }
+            toml::Value::Table(t) => floats_in_f32_range(t, key),
+            _ => Ok(()),
+        }
+    }
+    table.iter().try_for_each(|(k, v)| {
+        let key = if prefix.is_empty() {
+            k.clone()
+        } else {
+            format!("{prefix}.{k}")
+        };
+        check(v, &key)
+    })
+}

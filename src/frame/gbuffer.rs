@@ -40,6 +40,7 @@ pub fn target(thin: bool) -> TargetDesc {
             vec![NORMAL, ALBEDO, SPECULAR]
         },
         depth: Depth::Own(DEPTH),
+        ping_pong: false,
     }
 }
 

@@ -11,6 +11,7 @@
 //! - `targets`: the render targets the plan names, allocated and sized.
 //! - `meshes`: the meshes every screen or volume pass draws.
 //! - `timing`: pass times around glFinish.
+//! - `post`: the post chain's steps, what each reads and writes.
 //! - `views`: the camera's view and the reflected views mirrors add.
 
 pub mod billboards;
@@ -19,6 +20,7 @@ pub mod gbuffer;
 pub mod lights;
 pub mod meshes;
 pub mod plan;
+pub mod post;
 pub mod shadows;
 pub mod targets;
 pub mod technique;
@@ -26,4 +28,4 @@ pub mod timing;
 pub mod uniforms;
 pub mod views;
 
-pub use technique::{Frame, FrameOrder, Programs, RunPasses, Stage, Technique};
+pub use technique::{Frame, FrameOrder, Programs, RunPasses, Runs, Stage, Technique};

@@ -9,10 +9,12 @@
 //! work unless the stencil light-volume test is on).
 
 use crate::frame::lights::FrameLights;
+use crate::frame::post;
 use crate::frame::targets::TargetDesc;
-use crate::frame::technique::{FrameOrder, Stage, Technique};
+use crate::frame::technique::{FrameOrder, Runs, Stage, Technique};
 use crate::frame::views::View;
 use crate::math::depth::{DEPTH_BITS, precision_table};
+use crate::scene::post::PostPass;
 use crate::scene::{Projection, RenderPath, Scene};
 
 #[derive(Clone, Debug, PartialEq)]
@@ -135,7 +137,8 @@ impl FramePlan {
         };
         // Passes that run once, before every view (the shadow maps).
         let mut passes = Vec::new();
-        for (index, t) in registry.iter().enumerate().filter(|(_, t)| t.before_views) {
+        for (index, t) in (registry.iter().enumerate()).filter(|(_, t)| t.runs == Runs::BeforeViews)
+        {
             let ps = (t.passes)(scene, lights).into_iter();
             passes.extend(ps.map(|p| Pass {
                 technique: index,
@@ -145,7 +148,7 @@ impl FramePlan {
         let world: Vec<(usize, Vec<Pass>)> = registry
             .iter()
             .enumerate()
-            .filter(|&(i, t)| Some(i) != director && !t.before_views)
+            .filter(|&(i, t)| Some(i) != director && t.runs == Runs::PerView)
             .map(|(i, t)| (i, (t.passes)(scene, lights)))
             .collect();
         for stage in order.stages {
@@ -165,6 +168,19 @@ impl FramePlan {
                 }),
             }
         }
+        // Passes that run once, after every view, on the finished image:
+        // the post chain, in the order of the scene's [[post]] entries.
+        let mut after = Vec::new();
+        for (index, t) in (registry.iter().enumerate()).filter(|(_, t)| t.runs == Runs::AfterViews)
+        {
+            let ps = (t.passes)(scene, lights).into_iter();
+            after.extend(ps.map(|p| Pass {
+                technique: index,
+                ..p
+            }));
+        }
+        after.sort_by_key(|p| p.item);
+        passes.extend(after);
         for t in registry {
             for target in (t.targets)(scene, lights) {
                 match targets.iter().find(|d| d.name == target.name) {
@@ -177,7 +193,15 @@ impl FramePlan {
                 }
             }
         }
-        targets.push(TargetDesc::output());
+        targets.extend(post::targets(scene));
+        let srgb_gamma =
+            (scene.post.last()).is_some_and(|p| matches!(p, PostPass::Gamma { srgb: true, .. }));
+        let format = if srgb_gamma {
+            glow::SRGB8_ALPHA8
+        } else {
+            glow::RGBA8
+        };
+        targets.push(TargetDesc::output(format, scene.post.is_empty()));
         FramePlan {
             path: scene.render.path,
             targets,

@@ -31,15 +31,27 @@ pub struct TargetDesc {
     /// (attachment name, GL internal format), GL_COLOR_ATTACHMENT0 first.
     pub colors: Vec<(&'static str, u32)>,
     pub depth: Depth,
+    /// Its colour textures take turns at GL_COLOR_ATTACHMENT0 (the post
+    /// chain's ping-pong framebuffer, src/frame/post.rs): only the first is
+    /// attached when it is made.
+    pub ping_pong: bool,
 }
 
 impl TargetDesc {
-    /// The final image: 8-bit colour holding sRGB-encoded values, and depth.
-    pub fn output() -> TargetDesc {
+    /// The final image: 8-bit colour holding encoded values, and depth
+    /// (none when a post chain draws it: the world's depth is the HDR
+    /// target's). `format` is RGBA8, or SRGB8_ALPHA8 when the chain's gamma
+    /// pass leaves the encoding to GL_FRAMEBUFFER_SRGB.
+    pub fn output(format: u32, depth: bool) -> TargetDesc {
         TargetDesc {
             name: OUTPUT,
-            colors: vec![("color", glow::RGBA8)],
-            depth: Depth::Own(glow::DEPTH24_STENCIL8),
+            colors: vec![("color", format)],
+            depth: if depth {
+                Depth::Own(glow::DEPTH24_STENCIL8)
+            } else {
+                Depth::None
+            },
+            ping_pong: false,
         }
     }
 
@@ -106,7 +118,11 @@ impl Targets {
                     (None, Some(depth))
                 }
             };
-            let fb = Framebuffer::with_attachments(gl, d.name, colors, own, shared)?;
+            let fb = if d.ping_pong {
+                Framebuffer::ping_pong(gl, d.name, colors)?
+            } else {
+                Framebuffer::with_attachments(gl, d.name, colors, own, shared)?
+            };
             targets.push(fb);
         }
         Ok(Targets { targets })

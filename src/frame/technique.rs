@@ -50,10 +50,23 @@ pub struct Technique {
     /// that view. None (every other technique): the frame is the world
     /// drawn once, from the camera. At most one technique orders a frame.
     pub order: Option<fn(&Scene, &FrameLights) -> Option<FrameOrder>>,
-    /// Its passes run once a frame, before any view (shadow maps: the
-    /// light's view of the world does not change with the camera's).
-    /// False: they run for every view, as `order` says.
-    pub before_views: bool,
+    /// When its passes run: once before the views, for every view, or once
+    /// after them all.
+    pub runs: Runs,
+}
+
+/// When a technique's passes run in a frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Runs {
+    /// Once, before any view (shadow maps: the light's view of the world
+    /// does not change with the camera's).
+    BeforeViews,
+    /// For every view the world is drawn for, as `order` says.
+    PerView,
+    /// Once, after every view, on the finished image: the post-processing
+    /// chain (notes 01 §9). These passes run in the order of the scene's
+    /// `[[post]]` list (`Pass::item` is the entry), not the registry's.
+    AfterViews,
 }
 
 /// The frame as a technique that draws the world several times orders it.

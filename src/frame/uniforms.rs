@@ -11,9 +11,14 @@ pub struct FrameUniforms {
     pub eye: Vec3,
     pub light_count: i32,
     pub lights_ubo: glow::Buffer,
-    /// The final image is stored sRGB-encoded (8-bit output) rather than linear.
+    /// The world's target holds sRGB-encoded values (the 8-bit output, with
+    /// no post chain) rather than linear light (a post chain's HDR target,
+    /// or the RGBA32F output of error measurements).
     pub output_srgb: bool,
-    /// The background as written to the output (sRGB-encoded when the output is).
+    /// The output holds encoded values (8-bit) rather than linear ones
+    /// (RGBA32F): whether a post chain's gamma pass encodes.
+    pub output_encoded: bool,
+    /// The background as written to the world's target (sRGB-encoded when it is).
     pub clear_color: Vec3,
     /// The view's rectangle in the targets: x, y, width, height in pixels
     /// (the whole target but for a split view).
@@ -36,6 +41,8 @@ pub mod unit {
     pub const LIGHT: u32 = 4;
     /// The light pre-pass's specular light (`u_specular_light`).
     pub const SPECULAR_LIGHT: u32 = 5;
+    /// A post-chain step reads the previous image (`u_image`).
+    pub const POST_INPUT: u32 = 0;
 }
 
 /// The uniform-block binding point of the `Lights` block (glsl/common/lighting.glsl).

@@ -106,6 +106,19 @@ impl Framebuffer {
         }
     }
 
+    /// An FBO that owns `textures` but attaches only the first, at
+    /// GL_COLOR_ATTACHMENT0: the post chain's ping-pong pair, whose passes
+    /// attach the one they draw into (src/frame/post.rs).
+    pub fn ping_pong(gl: &Gl, name: &'static str, textures: Vec<Texture>) -> Result<Framebuffer> {
+        let mut textures = textures.into_iter();
+        let first = textures
+            .next()
+            .ok_or_else(|| anyhow!("framebuffer {name} has no attachments"))?;
+        let mut fb = Self::with_attachments(gl, name, vec![first], None, None)?;
+        fb.colors.extend(textures);
+        Ok(fb)
+    }
+
     /// Read colour attachment `index` as RGBA f32 (row 0 = bottom).
     pub fn read_rgba_f32(&self, index: u32) -> Vec<f32> {
         let n = (self.width * self.height * 4) as usize;

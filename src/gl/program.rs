@@ -287,6 +287,10 @@ impl Program {
     pub fn set_bool(&self, name: &str, v: bool) {
         self.set_i32(name, v as i32)
     }
+    /// A `float name[N]` array from its first element (glUniform1fv).
+    pub fn set_f32_array(&self, name: &str, v: &[f32]) {
+        unsafe { self.gl.uniform_1_f32_slice(self.loc(name).as_ref(), v) }
+    }
 
     /// glUniformBlockBinding: attach the named std140 block to binding point `binding`.
     pub fn bind_uniform_block(&self, block: &str, binding: u32) {

@@ -2,12 +2,14 @@
 //! as glsl/common/lighting.glsl, written once more so that tests can compare
 //! rendered pixels with `shade` below. Also the sRGB transfer functions the
 //! output uses, and (in `attenuation`) notes 04's attenuation and light-volume
-//! radius. `shadow_reference` is the exact answer shadow mapping approximates
+//! radius. `tonemap`: the post chain's tone-mapping and gamma curves.
+//! `shadow_reference` is the exact answer shadow mapping approximates
 //! (notes 01 §8.5): rays to the light through a BVH (`bvh`, `triangle`).
 
 pub mod attenuation;
 pub mod bvh;
 pub mod shadow_reference;
+pub mod tonemap;
 pub mod triangle;
 
 use crate::scene::{Light, LightKind, Material};

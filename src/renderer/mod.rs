@@ -11,6 +11,7 @@ use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, max_lights};
 use crate::frame::meshes::FrameMeshes;
 use crate::frame::plan::{FramePlan, Pass};
+use crate::frame::post::world_target;
 use crate::frame::shadows::ShadowMaps;
 use crate::frame::targets::{OUTPUT, TargetDesc, Targets};
 use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
@@ -242,6 +243,12 @@ impl Renderer {
         self.targets.get(OUTPUT)
     }
 
+    /// Where the world is drawn: the output, or the HDR target a post chain
+    /// reads (its depth and stencil are the frame's).
+    pub fn world(&self) -> &Framebuffer {
+        self.targets.get(world_target(&self.scene))
+    }
+
     /// The camera's uniforms, for `view`: a reflected view draws the world
     /// through `VP * R` and lights it with the eye reflected back, `R^-1 *
     /// eye` (src/frame/views.rs says why).
@@ -255,7 +262,9 @@ impl Renderer {
         let projection = camera.projection(w as f32 / h as f32);
         let r = for_view.reflection;
         let vp = projection * view * r;
-        let srgb = self.output_kind == Output::Srgb8;
+        let encoded = self.output_kind == Output::Srgb8;
+        // A post chain gets the world's light linear, and encodes at its end.
+        let srgb = encoded && self.scene.post.is_empty();
         let bg = self.scene.render.background;
         FrameUniforms {
             view,
@@ -266,6 +275,7 @@ impl Renderer {
             light_count: self.scene.lights.len() as i32,
             lights_ubo: self.lights_ubo.id,
             output_srgb: srgb,
+            output_encoded: encoded,
             viewport: [x, y, w, h],
             clear_color: if srgb {
                 bg.map(lighting::srgb_encode)

@@ -73,13 +73,13 @@ impl Renderer {
     /// glReadPixels gives): the shadow tests find each pixel's surface
     /// point from it.
     pub fn read_depth(&self) -> Vec<f32> {
-        self.output().read_depth_f32()
+        self.world().read_depth_f32()
     }
 
     /// The output's stencil buffer, one value per pixel, top row first
     /// (the stencil inspector; mirrors mark their regions there).
     pub fn read_stencil(&self) -> Vec<u8> {
-        self.output().read_stencil_top_down()
+        self.world().read_stencil_top_down()
     }
 
     /// Render a frame and return the output's stencil buffer as it was
@@ -96,7 +96,7 @@ impl Renderer {
                 "--after {pass}: the frame has passes 1 to {count} (gloss plan lists them)"
             );
         }
-        let (gl, fb) = (self.gl.clone(), self.output().id);
+        let (gl, fb) = (self.gl.clone(), self.world().id);
         let (w, h) = (self.width, self.height);
         let (mut n, mut stencil) = (0, Vec::new());
         self.render_inspected(camera, &mut |_| {

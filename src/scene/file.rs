@@ -31,6 +31,9 @@ pub(super) struct SceneFile {
     pub(super) billboards: Vec<BillboardFile>,
     #[serde(default)]
     pub(super) billboard_fields: Vec<BillboardFieldFile>,
+    /// The post chain's entries, each checked by src/scene/post.rs.
+    #[serde(default)]
+    pub(super) post: Vec<toml::Table>,
 }
 
 #[derive(Deserialize, Debug)]
@@ -90,6 +93,7 @@ pub(super) struct RenderFile {
     pub(super) billboards: BillboardMode,
     pub(super) billboard_alpha_ref: f32,
     pub(super) sort_transparent: bool,
+    pub(super) post_chain: super::settings::ChainForm,
 }
 
 impl Default for RenderFile {
@@ -111,6 +115,7 @@ impl Default for RenderFile {
             billboards: BillboardMode::AlphaTest,
             billboard_alpha_ref: 0.5,
             sort_transparent: true,
+            post_chain: super::settings::ChainForm::PingPong,
         }
     }
 }

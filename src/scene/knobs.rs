@@ -6,7 +6,9 @@
 //! lists the knobs it reads in its registration.
 
 use super::RenderSettings;
-use super::settings::{Accumulation, BillboardMode, DepthFunc, MirrorOrder, RenderPath, Shading};
+use super::settings::{
+    Accumulation, BillboardMode, ChainForm, DepthFunc, MirrorOrder, RenderPath, Shading,
+};
 use glam::Vec3;
 
 /// What a knob holds.
@@ -175,6 +177,19 @@ pub static BACKGROUND: Knob = Knob {
     },
 };
 
+pub static POST_CHAIN: Knob = Knob {
+    key: "render.post_chain",
+    label: "post chain",
+    help: "notes 01 §9: ping-pong (one framebuffer, two textures) or cascaded (a framebuffer per step)",
+    kind: Kind::Choice(ChainForm::WORDS),
+    get: |r| Value::Choice(index(ChainForm::ALL, r.post_chain)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.post_chain = ChainForm::ALL[i];
+        }
+    },
+};
+
 pub static MIRROR_ORDER: Knob = Knob {
     key: "render.mirror_order",
     label: "mirror order",
@@ -290,6 +305,7 @@ pub static ALL: &[&Knob] = &[
     &BILLBOARDS,
     &BILLBOARD_ALPHA_REF,
     &SORT_TRANSPARENT,
+    &POST_CHAIN,
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

@@ -12,6 +12,7 @@
 
 mod alpha_test;
 mod billboards;
+pub mod bloom;
 mod file;
 pub mod knobs;
 mod light_grid;
@@ -19,6 +20,8 @@ mod lights;
 pub mod meshes;
 mod mirrors;
 mod overrides;
+pub mod post;
+mod post_entry;
 mod resolve;
 mod save;
 mod settings;
@@ -108,6 +111,8 @@ pub struct RenderSettings {
     /// Draw transparent objects back to front (notes 01 §6.1); false shows
     /// what goes wrong unsorted.
     pub sort_transparent: bool,
+    /// How the post chain passes its image along (src/scene/post.rs).
+    pub post_chain: post::ChainForm,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -258,6 +263,9 @@ pub struct Scene {
     /// written (`set_billboards` makes `billboards` again).
     pub billboard_list: Vec<BillboardFile>,
     pub billboard_fields: Vec<BillboardFieldFile>,
+    /// `[[post]]`: the post-processing chain, in order (empty: none; the
+    /// lit scene is the output).
+    pub post: Vec<post::PostPass>,
 }
 
 impl Scene {

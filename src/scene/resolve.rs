@@ -67,6 +67,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         );
     }
     let (sprites, billboards) = super::billboards::billboards(&f, base)?;
+    let post = super::post::chain(&f.post)?;
 
     Ok(Scene {
         name,
@@ -83,6 +84,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         billboards,
         billboard_list: f.billboards.clone(),
         billboard_fields: f.billboard_fields.clone(),
+        post,
     })
 }
 
@@ -140,6 +142,7 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             a
         },
         sort_transparent: r.sort_transparent,
+        post_chain: r.post_chain,
     })
 }
 

@@ -124,6 +124,13 @@ impl Scene {
                 v => table.insert(key.into(), v),
             };
         }
+        // The post chain, as it is now.
+        if self.post.is_empty() {
+            table.remove("post");
+        } else {
+            let entries = self.post.iter().map(|p| toml::Value::Table(p.table()));
+            table.insert("post".into(), toml::Value::Array(entries.collect()));
+        }
         // The split views' rectangles, as they are now.
         if let Some(views) = table.get_mut("views").and_then(toml::Value::as_array_mut) {
             for (t, v) in views.iter_mut().zip(&self.views) {

@@ -134,6 +134,17 @@ impl DepthFunc {
 }
 
 setting! {
+    /// How the post chain's steps pass the image along (notes 01 §9).
+    pub enum ChainForm {
+        /// "Ping-pong" texturing: one framebuffer and two textures; each
+        /// step samples one and renders into the other.
+        PingPong = "ping_pong",
+        /// "Processing stages may be cascaded": each step its own framebuffer.
+        Cascaded = "cascaded",
+    }
+}
+
+setting! {
     /// The order of a planar mirror's passes (notes 05).
     pub enum MirrorOrder {
         /// "Rendering Normal First": the scene, then each mirror's

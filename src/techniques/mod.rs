@@ -14,6 +14,7 @@ pub mod blending;
 pub mod deferred;
 pub mod fragment_tests;
 pub mod lighting;
+pub mod post;
 pub mod shadows;
 pub mod stencil;
 
@@ -36,6 +37,12 @@ pub static ALL: &[&Technique] = &[
     &fragment_tests::viewports::VIEWPORTS,
     &billboards::billboards::BILLBOARDS,
     &blending::transparency::TRANSPARENCY,
+    // The post chain: after every view, in the scene's [[post]] order.
+    &post::blur::BLUR,
+    &post::kernel::KERNEL,
+    &post::color_filters::COLOR_FILTERS,
+    &post::tone_mapping::TONE_MAPPING,
+    &post::gamma_correction::GAMMA_CORRECTION,
 ];
 
 /// The frame plan of `scene`: the registered techniques' passes and targets.

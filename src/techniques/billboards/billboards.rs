@@ -39,9 +39,10 @@
 use crate::frame::billboards::instance_data;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::post::world_target;
+use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::unit;
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::debug::check_feedback_before_draw;
 use crate::gl::program::Program;
 use crate::scene::knobs;
@@ -67,7 +68,7 @@ pub const BILLBOARDS: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
@@ -86,7 +87,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         "{} billboards, 1 instanced quad ({mode})",
         scene.billboards.len()
     );
-    vec![Pass::new("billboards", OUTPUT, draws, file!())]
+    vec![Pass::new("billboards", world_target(scene), draws, file!())]
 }
 
 fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
@@ -137,7 +138,7 @@ impl RunPasses for Billboards {
             return;
         };
         let (gl, scene, u, p) = (f.gl, f.scene, f.uniforms, &self.program);
-        let output = f.targets.get(OUTPUT);
+        let output = f.targets.get(world_target(f.scene));
         // 1. The view: the camera's, or a mirror's reflected one (R: the
         // quads turn to the reflected viewer, and sort for it).
         let view = u.view * f.view.reflection;

@@ -34,10 +34,11 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::post::world_target;
 use crate::frame::shadows;
-use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::Scene;
 use crate::scene::knobs;
@@ -57,7 +58,7 @@ pub const TRANSPARENCY: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
@@ -73,7 +74,12 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let draws = format!(
         "{n} transparent objects {order}, GL_SRC_ALPHA / GL_ONE_MINUS_SRC_ALPHA, depth writes off"
     );
-    vec![Pass::new("transparency", OUTPUT, draws, file!())]
+    vec![Pass::new(
+        "transparency",
+        world_target(scene),
+        draws,
+        file!(),
+    )]
 }
 
 fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
@@ -111,7 +117,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
 impl RunPasses for Transparency {
     fn run(&self, _: &Pass, f: &Frame) {
         let (gl, p, u) = (f.gl, &self.program, f.uniforms);
-        let output = f.targets.get(OUTPUT);
+        let output = f.targets.get(world_target(f.scene));
         // 1. The transparent list, 3. sorted (or not, to show why it must be).
         let items: Vec<usize> = (0..f.draws.items.len())
             .filter(|&i| f.draws.items[i].transparent)

@@ -18,9 +18,10 @@
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::targets::{LIGHT_ACCUMULATION, OUTPUT, TargetDesc};
+use crate::frame::post::world_target;
+use crate::frame::targets::{LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::unit;
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
@@ -40,15 +41,19 @@ pub const COMPOSITE: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     match scene.render.path {
         RenderPath::Deferred | RenderPath::Volumes => vec![Pass::new(
             "composite",
-            OUTPUT,
-            "1 full-screen triangle (ambient + light, sRGB encode)".into(),
+            world_target(scene),
+            if scene.post.is_empty() {
+                "1 full-screen triangle (ambient + light, sRGB encode)".into()
+            } else {
+                "1 full-screen triangle (ambient + light, linear: a post chain follows)".into()
+            },
             file!(),
         )],
         RenderPath::Forward | RenderPath::Prepass => vec![],
@@ -75,7 +80,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
 impl RunPasses for Composite {
     fn run(&self, _: &Pass, f: &Frame) {
         let (gl, p, u) = (f.gl, &self.program, f.uniforms);
-        let output = f.targets.get(OUTPUT);
+        let output = f.targets.get(world_target(f.scene));
         // A frame with no lights has no lighting pass and no light to add.
         let light = f.targets.find(LIGHT_ACCUMULATION);
         unsafe {

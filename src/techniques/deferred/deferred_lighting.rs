@@ -18,10 +18,11 @@
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::post::world_target;
 use crate::frame::shadows;
-use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, OUTPUT, TargetDesc};
+use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
@@ -51,7 +52,7 @@ pub const DEFERRED_LIGHTING: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 /// The steps of this technique's passes.
@@ -71,10 +72,15 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         v.push(Pass::new("light pre-pass", LIGHT_ACCUMULATION, draws, file!()).step(LIGHT_PREPASS));
     }
     let draws = format!(
-        "{} objects again, GL_LEQUAL against the G-buffer's depth (blitted): material x light, sRGB encode",
-        scene.opaque_objects()
+        "{} objects again, GL_LEQUAL against the G-buffer's depth (blitted): material x light, {}",
+        scene.opaque_objects(),
+        if scene.post.is_empty() {
+            "sRGB encode"
+        } else {
+            "linear"
+        }
     );
-    v.push(Pass::new("combine", OUTPUT, draws, file!()).step(COMBINE));
+    v.push(Pass::new("combine", world_target(scene), draws, file!()).step(COMBINE));
     v
 }
 
@@ -87,6 +93,7 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
         name: LIGHT_ACCUMULATION,
         colors: vec![("diffuse_light", format), ("specular_light", format)],
         depth: Depth::Own(gbuffer::DEPTH),
+        ping_pong: false,
     }]
 }
 
@@ -133,7 +140,7 @@ impl DeferredLighting {
     fn combine(&self, f: &Frame) {
         let (gl, p, u) = (f.gl, &self.combine, f.uniforms);
         let gbuf = f.targets.get(gbuffer::NAME);
-        let output = f.targets.get(OUTPUT);
+        let output = f.targets.get(world_target(f.scene));
         // A frame with no lights has no light pre-pass and no light to add.
         let light = f.targets.find(LIGHT_ACCUMULATION);
         // The view's rectangle (all of the output but for split views).

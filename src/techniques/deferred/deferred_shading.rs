@@ -23,7 +23,7 @@ use crate::frame::plan::Pass;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::LIGHTS_BINDING;
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
@@ -43,7 +43,7 @@ pub const DEFERRED_SHADING: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
@@ -74,6 +74,7 @@ pub fn accumulation_target(scene: &Scene, depth: Depth) -> TargetDesc {
         name: LIGHT_ACCUMULATION,
         colors: vec![("light", scene.render.accumulation.gl())],
         depth,
+        ping_pong: false,
     }
 }
 

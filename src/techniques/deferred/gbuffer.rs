@@ -15,7 +15,7 @@ use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::unit;
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
@@ -34,7 +34,7 @@ pub const GBUFFER: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 /// Which G-buffer the scene's path fills: None (forward), full, or thin.

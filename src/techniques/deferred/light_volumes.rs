@@ -36,7 +36,7 @@ use crate::frame::plan::Pass;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::LIGHTS_BINDING;
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Program;
 use crate::scene::knobs;
@@ -62,7 +62,7 @@ pub const LIGHT_VOLUMES: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 fn runs(scene: &Scene, lights: &FrameLights) -> bool {

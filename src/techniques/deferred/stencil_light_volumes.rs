@@ -26,7 +26,7 @@ use crate::frame::gbuffer;
 use crate::frame::lights::{FrameLights, Volume};
 use crate::frame::plan::Pass;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
@@ -51,7 +51,7 @@ pub const STENCIL_LIGHT_VOLUMES: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 fn runs(scene: &Scene, lights: &FrameLights) -> bool {

@@ -22,9 +22,10 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::post::world_target;
+use crate::frame::targets::TargetDesc;
 use crate::frame::views::View;
-use crate::frame::{Frame, FrameOrder, Programs, RunPasses, Stage, Technique};
+use crate::frame::{Frame, FrameOrder, Programs, RunPasses, Runs, Stage, Technique};
 use crate::scene::Scene;
 use anyhow::Result;
 use glow::HasContext;
@@ -41,7 +42,7 @@ pub const VIEWPORTS: Technique = Technique {
     targets,
     create,
     order: Some(order),
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 fn passes(_: &Scene, _: &FrameLights) -> Vec<Pass> {
@@ -72,7 +73,7 @@ fn order(scene: &Scene, _: &FrameLights) -> Option<FrameOrder> {
     let draws = format!("{} views' edges, 1-pixel scissored clears", views.len());
     stages.push(Stage::Own(Pass::new(
         "viewport borders",
-        OUTPUT,
+        world_target(scene),
         draws,
         file!(),
     )));
@@ -97,7 +98,7 @@ impl RunPasses for Viewports {
     /// Each view's four edges, one pixel wide, as scissored clears.
     fn run(&self, _: &Pass, f: &Frame) {
         let gl = f.gl;
-        let output = f.targets.get(OUTPUT);
+        let output = f.targets.get(world_target(f.scene));
         let grey = if f.uniforms.output_srgb {
             crate::lighting::srgb_encode(BORDER)
         } else {

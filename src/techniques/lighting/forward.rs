@@ -23,10 +23,11 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::post::world_target;
 use crate::frame::shadows;
-use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene, Shading};
@@ -58,7 +59,7 @@ pub const FORWARD: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
@@ -75,7 +76,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         scene.opaque_objects(),
         scene.lights.len()
     );
-    vec![Pass::new("forward", OUTPUT, draws, file!())]
+    vec![Pass::new("forward", world_target(scene), draws, file!())]
 }
 
 fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
@@ -117,7 +118,7 @@ impl RunPasses for Forward {
     /// The forward pass: clear, depth test, back-face culling, one draw per object.
     fn run(&self, _: &Pass, f: &Frame) {
         let (gl, settings, u) = (f.gl, &f.scene.render, f.uniforms);
-        let target = f.targets.get(OUTPUT);
+        let target = f.targets.get(world_target(f.scene));
         let p = match settings.shading {
             Shading::Phong => &self.phong,
             Shading::Gouraud => &self.gouraud,

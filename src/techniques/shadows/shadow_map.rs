@@ -26,7 +26,7 @@ use crate::frame::plan::Pass;
 use crate::frame::shadows::{Caster, casters};
 use crate::frame::targets::TargetDesc;
 use crate::frame::targets::format_name;
-use crate::frame::{Frame, Programs, RunPasses, Technique};
+use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::depth_map;
 use crate::gl::program::Program;
 use crate::scene::{CubeRender, LightKind, Scene};
@@ -51,7 +51,7 @@ pub const SHADOW_MAP: Technique = Technique {
     targets,
     create,
     order: None,
-    before_views: true,
+    runs: Runs::BeforeViews,
 };
 
 /// One pass per casting light; none when no light casts.

@@ -31,9 +31,10 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::post::world_target;
+use crate::frame::targets::TargetDesc;
 use crate::frame::views::View;
-use crate::frame::{Frame, FrameOrder, Programs, RunPasses, Stage, Technique};
+use crate::frame::{Frame, FrameOrder, Programs, RunPasses, Runs, Stage, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::{MirrorOrder, Scene};
@@ -64,7 +65,7 @@ pub const MIRROR: Technique = Technique {
     targets,
     create,
     order: Some(order),
-    before_views: false,
+    runs: Runs::PerView,
 };
 
 /// Normal first, pass 2: stencil where the mirror passes the depth test.
@@ -139,7 +140,7 @@ fn reflected_first(scene: &Scene, m: usize) -> Option<FrameOrder> {
     if stencil {
         let draws = format!("mirror '{}': stencil 1, colour cleared outside it", o.name);
         stages.push(Stage::Own(
-            Pass::new("mirror stencil", OUTPUT, draws, file!())
+            Pass::new("mirror stencil", world_target(scene), draws, file!())
                 .step(STENCIL_AND_CLEAR)
                 .about(m, 1),
         ));
@@ -147,7 +148,7 @@ fn reflected_first(scene: &Scene, m: usize) -> Option<FrameOrder> {
     stages.push(Stage::World(0));
     let draws = format!("mirror '{}': tint x reflectance, depth-tested", o.name);
     stages.push(Stage::Own(
-        Pass::new("mirror surface", OUTPUT, draws, file!())
+        Pass::new("mirror surface", world_target(scene), draws, file!())
             .step(SURFACE_TESTED)
             .about(m, u32::from(stencil)),
     ));
@@ -183,7 +184,7 @@ fn visit(
     let name = &scene.objects[m].name;
     let own = |pass: &'static str, step: u32, draws: String| {
         Stage::Own(
-            Pass::new(pass, OUTPUT, draws, file!())
+            Pass::new(pass, world_target(scene), draws, file!())
                 .step(step)
                 .about(m, value)
                 .for_view(parent),
@@ -245,7 +246,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
 impl RunPasses for Mirror {
     fn run(&self, pass: &Pass, f: &Frame) {
         let gl = f.gl;
-        let target = f.targets.get(OUTPUT);
+        let target = f.targets.get(world_target(f.scene));
         let value = pass.value as i32;
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));

@@ -105,7 +105,11 @@ pub(super) fn run(
     if !blooms.is_empty() {
         println!("{}", super::bloom::table(&blooms));
     }
-    finish(&rows, args)
+    finish(&rows, args)?;
+    if !reference_scene.post.is_empty() {
+        println!("{}", super::post::floor_table(ctx, args, &reference_scene)?);
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -338,3 +338,36 @@ fn grayscale_and_invert_match_their_formulas() {
     let inverted = per_channel(&input, |c| 1.0 - c.clamp(0.0, 1.0));
     assert_within("invert", &r.read_linear(), &inverted, 1e-3);
 }
+
+/// One NaN and one infinite pixel (a division by zero upstream) must not
+/// spread through a neighbourhood pass: both passes read through
+/// glsl/post/finite.glsl (NaN as 0, +inf as 65504), and give what the CPU
+/// gives on the image sanitised alike.
+#[test]
+fn a_nan_or_inf_pixel_does_not_spread_through_a_blur_or_a_kernel() {
+    let ctx = common::context(common::backend());
+    let mut input = random_image(6, 1.0);
+    let (nan, inf) = ((H / 2 * W + 10) * 4, (H / 3 * W + 30) * 4);
+    input[nan..nan + 3].copy_from_slice(&[f32::NAN; 3]);
+    input[inf] = f32::INFINITY;
+    let mut clean = input.clone();
+    clean[nan..nan + 3].copy_from_slice(&[0.0; 3]);
+    clean[inf] = 65504.0;
+    let post = "[[post]]\npass = \"blur\"\nsigma = 2.0\nradius = 6\ntaps = \"direct\"\n[[post]]\npass = \"gamma\"\n";
+    let r = run_chain(&ctx, &chain_scene(post), &input, Output::Linear32F);
+    let out = r.read_linear();
+    assert!(
+        out.iter().all(|v| v.is_finite()),
+        "a NaN or inf came through the blur"
+    );
+    let expected = per_channel(&cpu_blur(&clean, &Kernel::gaussian(2.0, 6)), |c| {
+        c.clamp(0.0, 1.0)
+    });
+    assert_within("blur-nan-inf", &out, &expected, 1e-3);
+    let post = "[[post]]\npass = \"sharpen\"\n[[post]]\npass = \"gamma\"\n";
+    let r = run_chain(&ctx, &chain_scene(post), &input, Output::Linear32F);
+    assert!(
+        r.read_linear().iter().all(|v| v.is_finite()),
+        "a NaN or inf came through the kernel"
+    );
+}

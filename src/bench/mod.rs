@@ -15,6 +15,7 @@
 //! CSV file and the PNG plot of error against frame time).
 
 mod args;
+pub mod bloom;
 mod csv;
 mod plot;
 mod post;

@@ -80,6 +80,7 @@ pub(super) fn run(
     let reference =
         render_scene(ctx, &reference_scene, crate::renderer::Output::Srgb8)?.read_image();
     let mut rows = Vec::new();
+    let (mut blooms, mut cache) = (Vec::new(), super::bloom::ReferenceCache::default());
     for (i, (label, scene)) in scenes.iter().enumerate() {
         let row = BenchRow {
             setting: label.clone(),
@@ -94,9 +95,16 @@ pub(super) fn run(
         if scene.lights.iter().any(|l| l.shadow.is_some()) {
             row.shadow = Some(super::shadows::evaluate(ctx, scene)?.errors);
         }
+        // A chain with a bloom: the bloom against its CPU reference.
+        if let Some(e) = super::bloom::bench_error(ctx, scene, &mut cache)? {
+            blooms.push((label.clone(), super::bloom::bloom_ms(&row.passes), e));
+        }
         rows.push(row);
     }
     eprintln!();
+    if !blooms.is_empty() {
+        println!("{}", super::bloom::table(&blooms));
+    }
     finish(&rows, args)?;
     if !reference_scene.post.is_empty() {
         println!("{}", super::post::floor_table(ctx, args, &reference_scene)?);

@@ -41,6 +41,7 @@ pub fn target(thin: bool) -> TargetDesc {
         },
         depth: Depth::Own(DEPTH),
         ping_pong: false,
+        mips: None,
     }
 }
 

@@ -129,6 +129,7 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
         colors: vec![("color", HDR_FORMAT)],
         depth: Depth::Own(glow::DEPTH24_STENCIL8),
         ping_pong: false,
+        mips: None,
     }];
     match scene.render.post_chain {
         ChainForm::PingPong if steps > 1 => v.push(TargetDesc {
@@ -136,6 +137,7 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
             colors: vec![("ping", HDR_FORMAT), ("pong", HDR_FORMAT)],
             depth: Depth::None,
             ping_pong: true,
+            mips: None,
         }),
         ChainForm::PingPong => {}
         ChainForm::Cascaded => v.extend(CASCADE[..steps - 1].iter().map(|&name| TargetDesc {
@@ -143,6 +145,7 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
             colors: vec![("color", HDR_FORMAT)],
             depth: Depth::None,
             ping_pong: false,
+            mips: None,
         })),
     }
     v

@@ -6,7 +6,8 @@
 
 use crate::gl::Gl;
 use crate::gl::framebuffer::Framebuffer;
-use crate::gl::texture::Texture;
+use crate::gl::mip_target::MipTarget;
+use crate::gl::texture::{Texture, max_level};
 use anyhow::{Result, anyhow};
 
 /// The final image: the window shows it, `gloss render` writes it.
@@ -35,6 +36,12 @@ pub struct TargetDesc {
     /// chain's ping-pong framebuffer, src/frame/post.rs): only the first is
     /// attached when it is made.
     pub ping_pong: bool,
+    /// A texture with mip levels `first..=last` of the frame size, one
+    /// framebuffer per level (src/gl/mip_target.rs; bloom's four blurs,
+    /// notes 03). Levels the frame is too small for are left out: a 3x2
+    /// frame has level 1 only, a 1x1 frame none (then there is no target).
+    /// None: one level, the frame size.
+    pub mips: Option<(u32, u32)>,
 }
 
 impl TargetDesc {
@@ -52,6 +59,7 @@ impl TargetDesc {
                 Depth::None
             },
             ping_pong: false,
+            mips: None,
         }
     }
 
@@ -66,6 +74,9 @@ impl TargetDesc {
             Depth::None => {}
             Depth::Own(f) => v.push(format!("depth_stencil:{}", format_name(f))),
             Depth::SharedWith(t) => v.push(format!("depth_stencil:{t}'s")),
+        }
+        if let Some((first, last)) = self.mips {
+            v.push(format!("mip levels {first}..={last}, one framebuffer each"));
         }
         v
     }
@@ -88,13 +99,26 @@ pub fn format_name(format: u32) -> &'static str {
 /// The allocated targets of one plan.
 pub struct Targets {
     targets: Vec<Framebuffer>,
+    /// The targets with mip levels.
+    mips: Vec<MipTarget>,
 }
 
 impl Targets {
     /// Allocate every target of `descs`, `width` x `height`, in order.
     pub fn new(gl: &Gl, descs: &[TargetDesc], width: i32, height: i32) -> Result<Targets> {
         let mut targets: Vec<Framebuffer> = Vec::with_capacity(descs.len());
+        let mut mips = Vec::new();
         for d in descs {
+            if let Some((first, last)) = d.mips {
+                let last = last.min(max_level(width, height));
+                if first <= last {
+                    let format = d.colors.first().map_or(glow::RGBA16F, |c| c.1);
+                    mips.push(MipTarget::new(
+                        gl, d.name, width, height, format, first, last,
+                    )?);
+                }
+                continue;
+            }
             let mut colors = Vec::with_capacity(d.colors.len());
             for &(_, format) in &d.colors {
                 colors.push(Texture::render_target(gl, width, height, format)?);
@@ -125,7 +149,7 @@ impl Targets {
             };
             targets.push(fb);
         }
-        Ok(Targets { targets })
+        Ok(Targets { targets, mips })
     }
 
     /// The target named `name`, if the plan has it.
@@ -139,9 +163,16 @@ impl Targets {
             .unwrap_or_else(|| panic!("the frame plan has no target named {name}"))
     }
 
+    /// The target with mip levels named `name`, if the plan has it and the
+    /// frame has at least its first level.
+    pub fn mip(&self, name: &str) -> Option<&MipTarget> {
+        self.mips.iter().find(|t| t.name == name)
+    }
+
     /// Free every target (the ones sharing a depth texture first).
     pub fn clear(&mut self) {
         while self.targets.pop().is_some() {}
+        self.mips.clear();
     }
 }
 

@@ -11,6 +11,7 @@ pub mod egl;
 pub mod framebuffer;
 pub mod live;
 pub mod mesh;
+pub mod mip_target;
 pub mod osmesa;
 pub mod program;
 pub mod query;

@@ -149,6 +149,111 @@ impl Texture {
     }
 }
 
+impl Texture {
+    /// An empty texture to render into at mip levels `first..=last` of a
+    /// `width` x `height` image (level k is max(1, size >> k) each way), for
+    /// passes that draw into one level each. GL_TEXTURE_BASE_LEVEL is
+    /// `first` and GL_TEXTURE_MAX_LEVEL `last`: a shader counts levels from
+    /// `first` (lod 0 is level `first`). Filtering is bilinear within a
+    /// level (GL_LINEAR_MIPMAP_NEAREST: textureLod at a whole lod reads that
+    /// level), clamped to the edge.
+    ///
+    /// The levels below `first` are allocated too, though nothing draws or
+    /// samples them: GL 3.3 needs only base to max, but Mesa lays a texture
+    /// out from level 0, guesses level 0 from the first level it is given,
+    /// and answers GL_FRAMEBUFFER_UNSUPPORTED for a 1x1 level 1 of a 3x2
+    /// image without it.
+    pub fn render_target_levels(
+        gl: &Gl,
+        width: i32,
+        height: i32,
+        internal_format: u32,
+        first: u32,
+        last: u32,
+    ) -> Result<Texture> {
+        if first > last || last > max_level(width, height) {
+            bail!(
+                "a {width}x{height} texture has levels 0..={}, not {first}..={last}",
+                max_level(width, height)
+            );
+        }
+        let (format, ty) = upload_format(internal_format)?;
+        unsafe {
+            let id = gl
+                .create_texture()
+                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            super::live::made(super::live::Kind::Texture);
+            gl.bind_texture(glow::TEXTURE_2D, Some(id));
+            for level in 0..=last {
+                let (w, h) = level_size(width, height, level);
+                gl.tex_image_2d(
+                    glow::TEXTURE_2D,
+                    level as i32,
+                    internal_format as i32,
+                    w,
+                    h,
+                    0,
+                    format,
+                    ty,
+                    PixelUnpackData::Slice(None),
+                );
+            }
+            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_BASE_LEVEL, first as i32);
+            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, last as i32);
+            set_sampling(
+                gl,
+                Sampling {
+                    wrap: glow::CLAMP_TO_EDGE,
+                    min_filter: glow::LINEAR_MIPMAP_NEAREST,
+                    mag_filter: glow::LINEAR,
+                },
+            );
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            Ok(Texture {
+                gl: gl.clone(),
+                id,
+                width,
+                height,
+                internal_format,
+            })
+        }
+    }
+
+    /// Read mip `level` back as RGBA f32 (glGetTexImage; row 0 = bottom),
+    /// with its size.
+    pub fn read_level_f32(&self, level: u32) -> (i32, i32, Vec<f32>) {
+        let (w, h) = level_size(self.width, self.height, level);
+        let mut out = vec![0f32; (w * h * 4) as usize];
+        unsafe {
+            self.gl.bind_texture(glow::TEXTURE_2D, Some(self.id));
+            self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
+            self.gl.get_tex_image(
+                glow::TEXTURE_2D,
+                level as i32,
+                glow::RGBA,
+                glow::FLOAT,
+                glow::PixelPackData::Slice(Some(super::framebuffer::bytemuck_f32(&mut out))),
+            );
+            self.gl.bind_texture(glow::TEXTURE_2D, None);
+        }
+        (w, h, out)
+    }
+}
+
+/// The size of mip `level` of a `width` x `height` image: each side halved
+/// `level` times, rounded down, at least 1 (GL 3.3 §3.8.14).
+pub fn level_size(width: i32, height: i32, level: u32) -> (i32, i32) {
+    let shrink = |n: i32| (n >> level.min(31)).max(1);
+    (shrink(width), shrink(height))
+}
+
+/// The last mip level of a `width` x `height` image: floor(log2(max side)),
+/// where both sides are 1.
+pub fn max_level(width: i32, height: i32) -> u32 {
+    let side = width.max(height).max(1) as u32;
+    31 - side.leading_zeros()
+}
+
 /// Decode an image file to RGBA8 with v flipped for GL, refusing absurd sizes
 /// before decoding.
 pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {

@@ -8,6 +8,7 @@
 //! `GLOSS_UPDATE_GOLDEN=1 cargo test --release --test golden` and review the
 //! changed files before committing them.
 
+pub mod bloom_reference;
 mod golden;
 pub mod shadow_mask;
 pub mod shadow_metrics;

@@ -43,6 +43,7 @@ pub static ALL: &[&Technique] = &[
     &post::color_filters::COLOR_FILTERS,
     &post::tone_mapping::TONE_MAPPING,
     &post::gamma_correction::GAMMA_CORRECTION,
+    &post::bloom::BLOOM,
 ];
 
 /// The frame plan of `scene`: the registered techniques' passes and targets.

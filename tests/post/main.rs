@@ -16,5 +16,6 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod bloom;
 mod chain;
 mod forms;

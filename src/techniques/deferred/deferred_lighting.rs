@@ -94,6 +94,7 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
         colors: vec![("diffuse_light", format), ("specular_light", format)],
         depth: Depth::Own(gbuffer::DEPTH),
         ping_pong: false,
+        mips: None,
     }]
 }
 

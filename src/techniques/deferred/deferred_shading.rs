@@ -75,6 +75,7 @@ pub fn accumulation_target(scene: &Scene, depth: Depth) -> TargetDesc {
         colors: vec![("light", scene.render.accumulation.gl())],
         depth,
         ping_pong: false,
+        mips: None,
     }
 }
 

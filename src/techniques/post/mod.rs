@@ -3,6 +3,8 @@
 //! cascaded framebuffers, one step after another) is src/frame/post.rs;
 //! each file here is one kind of step.
 
+pub mod bloom;
+pub mod bloom_levels;
 pub mod blur;
 pub mod color_filters;
 pub mod gamma_correction;

@@ -5,6 +5,7 @@
 
 pub mod blur;
 pub mod color_filters;
+pub mod fxaa;
 pub mod gamma_correction;
 pub mod kernel;
 pub mod tone_mapping;

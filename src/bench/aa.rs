@@ -112,17 +112,23 @@ impl LinearImage {
 pub fn variant(base: &Scene, msaa: u32, fxaa: bool) -> Result<Scene> {
     let mut s = base.clone();
     s.render.msaa = msaa;
-    let own = (s.post.iter()).find(|p| matches!(p, PostPass::Fxaa(_))).cloned();
+    let own = (s.post.iter())
+        .find(|p| matches!(p, PostPass::Fxaa(_)))
+        .cloned();
     s.post.retain(|p| !matches!(p, PostPass::Fxaa(_)));
     if fxaa {
-        let tonemap = s.post.iter().position(|p| matches!(p, PostPass::Tonemap { .. }));
+        let tonemap = s
+            .post
+            .iter()
+            .position(|p| matches!(p, PostPass::Tonemap { .. }));
         let Some(t) = tonemap else {
             bail!(
                 "{}: FXAA needs a [[post]] chain with a tonemap pass (it sits after tonemap, before gamma)",
                 base.name
             );
         };
-        s.post.insert(t + 1, own.unwrap_or(PostPass::Fxaa(Fxaa::default())));
+        s.post
+            .insert(t + 1, own.unwrap_or(PostPass::Fxaa(Fxaa::default())));
     }
     Ok(s)
 }
@@ -158,7 +164,9 @@ pub fn reference(ctx: &Headless, scene: &Scene) -> Result<LinearImage> {
 /// The edge pixels of `reference` (see `EDGE_STEP`), top row first.
 pub fn edge_mask(reference: &LinearImage) -> Vec<bool> {
     let (w, h) = (reference.width as i64, reference.height as i64);
-    let luma: Vec<f32> = (0..(w * h) as usize).map(|i| reference.display_luma(i)).collect();
+    let luma: Vec<f32> = (0..(w * h) as usize)
+        .map(|i| reference.display_luma(i))
+        .collect();
     let at = |x: i64, y: i64| luma[(y.clamp(0, h - 1) * w + x.clamp(0, w - 1)) as usize];
     (0..h)
         .flat_map(|y| (0..w).map(move |x| (x, y)))
@@ -241,20 +249,37 @@ pub(super) fn run(args: &BenchArgs, scene_path: &Path, ctx: &Headless) -> Result
         let scene = variant(&base, msaa, fxaa)?;
         let image = render_linear(ctx, &scene, w, h)?;
         let error = error(&image, &reference, &edges)?;
-        let mut r = Renderer::new(&ctx.gl, &ctx.debug, &scene, &Sources::Embedded, w as i32, h as i32)
-            .with_context(|| format!("setting {label}"))?;
+        let mut r = Renderer::new(
+            &ctx.gl,
+            &ctx.debug,
+            &scene,
+            &Sources::Embedded,
+            w as i32,
+            h as i32,
+        )
+        .with_context(|| format!("setting {label}"))?;
         r.timing = true;
-        let samples = r.targets().find(crate::frame::multisample::MSAA).map_or(1, |t| t.colors[0].samples);
+        let samples = r
+            .targets()
+            .find(crate::frame::multisample::MSAA)
+            .map_or(1, |t| t.colors[0].samples);
         let (mut frame, mut forward, mut aa) = (Vec::new(), Vec::new(), Vec::new());
         for f in 0..args.warmup + args.frames {
-            eprint!("\r{label:<14} frame {}/{}   ", f + 1, args.warmup + args.frames);
+            eprint!(
+                "\r{label:<14} frame {}/{}   ",
+                f + 1,
+                args.warmup + args.frames
+            );
             r.render(&scene.camera)?;
             if f < args.warmup {
                 continue;
             }
             let t = &r.last_times;
             let sum = |names: &[&str]| -> f64 {
-                (t.passes.iter()).filter(|(n, _)| names.contains(n)).map(|(_, ms)| ms).sum()
+                (t.passes.iter())
+                    .filter(|(n, _)| names.contains(n))
+                    .map(|(_, ms)| ms)
+                    .sum()
             };
             frame.push(t.frame_ms);
             forward.push(sum(&["forward"]));

@@ -350,7 +350,9 @@ pub fn chain(entries: &[toml::Table]) -> Result<Vec<PostPass>> {
         .collect::<Result<Vec<_>>>()?;
     for (i, p) in chain.iter().enumerate() {
         // FXAA's thresholds are for display-range luma (docs/post/fxaa.md).
-        let tonemapped = chain[..i].iter().any(|q| matches!(q, PostPass::Tonemap { .. }));
+        let tonemapped = chain[..i]
+            .iter()
+            .any(|q| matches!(q, PostPass::Tonemap { .. }));
         if matches!(p, PostPass::Fxaa(_)) && !tonemapped {
             bail!(
                 "post[{i}] (fxaa): FXAA reads display-range colour: put a tonemap pass before it (after tonemap, before gamma)"

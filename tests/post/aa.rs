@@ -110,7 +110,10 @@ fn fxaa_and_msaa_bring_the_edge_error_down_against_supersampling() {
     let table = format!("{errors:#?}");
     // The plate's outline: a few hundred pixels of 19 200.
     assert!(none.edge_pixels > 300, "{table}");
-    assert!(none.edge_rmse * 255.0 > 40.0, "aliased edges are far off: {table}");
+    assert!(
+        none.edge_rmse * 255.0 > 40.0,
+        "aliased edges are far off: {table}"
+    );
     // Measured on llvmpipe: 62.7/255 with none, 36.4 with FXAA (1.7x
     // less), 15.3 with 4x MSAA (4.1x less). Bounds: FXAA 1.5x, MSAA 3x.
     assert!(fxaa.edge_rmse < none.edge_rmse / 1.5, "{table}");
@@ -122,9 +125,13 @@ fn fxaa_and_msaa_bring_the_edge_error_down_against_supersampling() {
 fn fxaa_leaves_flat_regions_exactly_as_they_were() {
     let ctx = common::context(common::backend());
     let base = scene(SLANTED, &[]);
-    let plain = render_scene(&ctx, &base, Output::Srgb8).unwrap().read_image();
+    let plain = render_scene(&ctx, &base, Output::Srgb8)
+        .unwrap()
+        .read_image();
     let with = aa::variant(&base, 1, true).unwrap();
-    let fxaa = render_scene(&ctx, &with, Output::Srgb8).unwrap().read_image();
+    let fxaa = render_scene(&ctx, &with, Output::Srgb8)
+        .unwrap()
+        .read_image();
     let (w, h) = plain.dimensions();
     let (mut flat, mut changed_flat, mut changed) = (0, 0, 0);
     for y in 0..h {
@@ -147,9 +154,15 @@ fn fxaa_leaves_flat_regions_exactly_as_they_were() {
             }
         }
     }
-    assert_eq!(changed_flat, 0, "FXAA changed {changed_flat} of {flat} flat pixels");
+    assert_eq!(
+        changed_flat, 0,
+        "FXAA changed {changed_flat} of {flat} flat pixels"
+    );
     assert!(flat > w * h * 9 / 10, "{flat} flat pixels of {}", w * h);
-    assert!(changed > 100, "FXAA changed only {changed} pixels: it did nothing");
+    assert!(
+        changed > 100,
+        "FXAA changed only {changed} pixels: it did nothing"
+    );
 }
 
 #[test]
@@ -188,9 +201,15 @@ fn the_plan_has_the_msaa_target_and_resolve_only_when_msaa_runs() {
     let tonemap = names.iter().position(|n| *n == "tone mapping").unwrap();
     assert_eq!(resolve + 1, tonemap, "resolved before the chain: {names:?}");
     assert_eq!(with.passes[resolve].target, "hdr");
-    assert_eq!(with.passes[0].target, MSAA, "the forward pass draws into the twin");
+    assert_eq!(
+        with.passes[0].target, MSAA,
+        "the forward pass draws into the twin"
+    );
     let text = with.to_string();
-    assert!(text.contains("msaa resolve") && text.contains("4 samples"), "{text}");
+    assert!(
+        text.contains("msaa resolve") && text.contains("4 samples"),
+        "{text}"
+    );
 
     let without = plan(&scene(SLANTED, &[]));
     assert!(without.target(MSAA).is_none() && !without.has_pass("msaa resolve"));
@@ -199,7 +218,10 @@ fn the_plan_has_the_msaa_target_and_resolve_only_when_msaa_runs() {
     let mut deferred = scene(SLANTED, &["render.msaa=8"]);
     deferred.render.path = RenderPath::Deferred;
     let p = plan(&deferred);
-    assert!(p.target(MSAA).is_none() && !p.has_pass("msaa resolve"), "{p}");
+    assert!(
+        p.target(MSAA).is_none() && !p.has_pass("msaa resolve"),
+        "{p}"
+    );
     // No chain: the resolve writes the output.
     let direct = plan(&scene(FLAT, &["render.msaa=2"]));
     assert_eq!(direct.passes.last().unwrap().target, "output");
@@ -216,7 +238,11 @@ fn every_aa_pass_restores_the_gl_state_and_raises_no_error() {
         let mut s = shipped.clone();
         s.render.msaa = msaa;
         let changed = common::state_left_changed(&ctx, &s, 96, 54);
-        assert!(changed.is_empty(), "msaa {msaa}:\n  {}", changed.join("\n  "));
+        assert!(
+            changed.is_empty(),
+            "msaa {msaa}:\n  {}",
+            changed.join("\n  ")
+        );
     }
     // RGBA32F output (error measurements) with MSAA and no chain: the twin
     // follows the output's format, or the blit would fail.
@@ -231,14 +257,20 @@ fn the_reference_is_a_box_filter_in_linear_light() {
     let big = LinearImage {
         width: 4,
         height: 4,
-        rgb: (0..16).flat_map(|i| [if i % 2 == 0 { 1.0 } else { 0.0 }, 0.5, 0.0]).collect(),
+        rgb: (0..16)
+            .flat_map(|i| [if i % 2 == 0 { 1.0 } else { 0.0 }, 0.5, 0.0])
+            .collect(),
     };
     let small = big.box_down(4);
     assert_eq!((small.width, small.height), (1, 1));
     assert_eq!(small.rgb, vec![0.5, 0.5, 0.0]);
     // Half covered is 0.5 in linear light: 188 of 255 once encoded, not 128.
     let edges = [true];
-    let grey = LinearImage { width: 1, height: 1, rgb: vec![0.5, 0.5, 0.0] };
+    let grey = LinearImage {
+        width: 1,
+        height: 1,
+        rgb: vec![0.5, 0.5, 0.0],
+    };
     let e = aa::error(&grey, &small, &edges).unwrap();
     assert_eq!(e.rmse, 0.0);
     assert_eq!(e.edge_pixels, 1);
@@ -253,14 +285,29 @@ fn bad_aa_keys_are_errors_that_name_the_key() {
         )
     };
     let cases: Vec<(String, &str)> = vec![
-        (SLANTED.replace("size = [160, 120]", "size = [160, 120]\nmsaa = 3"), "render.msaa"),
-        (SLANTED.replace("size = [160, 120]", "size = [160, 120]\nmsaa = 16"), "render.msaa"),
-        (SLANTED.replace("size = [160, 120]", "size = [160, 120]\nmsaa = \"4\""), "msaa"),
+        (
+            SLANTED.replace("size = [160, 120]", "size = [160, 120]\nmsaa = 3"),
+            "render.msaa",
+        ),
+        (
+            SLANTED.replace("size = [160, 120]", "size = [160, 120]\nmsaa = 16"),
+            "render.msaa",
+        ),
+        (
+            SLANTED.replace("size = [160, 120]", "size = [160, 120]\nmsaa = \"4\""),
+            "msaa",
+        ),
         (fxaa("quality = 16"), "post[1] (fxaa).quality"),
         (fxaa("quality = \"high\""), "post[1] (fxaa).quality"),
         (fxaa("subpix = 1.5"), "post[1] (fxaa).subpix"),
-        (fxaa("edge_threshold = 0.0"), "post[1] (fxaa).edge_threshold"),
-        (fxaa("edge_threshold_min = -0.1"), "post[1] (fxaa).edge_threshold_min"),
+        (
+            fxaa("edge_threshold = 0.0"),
+            "post[1] (fxaa).edge_threshold",
+        ),
+        (
+            fxaa("edge_threshold_min = -0.1"),
+            "post[1] (fxaa).edge_threshold_min",
+        ),
         (fxaa("radius = 2"), "unknown key 'radius'"),
     ];
     for (text, key) in &cases {

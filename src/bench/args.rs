@@ -43,6 +43,11 @@ pub struct BenchArgs {
     /// default: the scene as written).
     #[arg(long = "reference", value_name = "KEY=VALUE", requires = "vary")]
     pub reference: Vec<String>,
+    /// Measure anti-aliasing instead (none, FXAA, MSAA 2/4/8, MSAA 4 +
+    /// FXAA) against a 16-sample supersampled reference (src/bench/aa.rs);
+    /// default scene scenes/antialiasing.toml.
+    #[arg(long, conflicts_with = "vary")]
+    pub aa: bool,
     /// Where the CSV and the plot go.
     #[arg(long, default_value = "target/bench")]
     pub out: PathBuf,

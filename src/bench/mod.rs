@@ -10,10 +10,14 @@
 //! around glFinish ("cpu+glFinish"). On a real GPU the whole frame is also
 //! timed with a GL_TIME_ELAPSED query ("gpu" column).
 //!
+//! `--aa` measures anti-aliasing against a supersampled reference instead
+//! (`aa`).
+//!
 //! The files: `args` (the command line), `stats` (median and spread of the
 //! samples), `table` (the rows and the text table), `csv` and `plot` (the
 //! CSV file and the PNG plot of error against frame time).
 
+pub mod aa;
 mod args;
 pub mod bloom;
 mod csv;
@@ -67,14 +71,19 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     if args.frames == 0 {
         bail!("--frames must be at least 1");
     }
-    let scene_path = args
-        .scene
-        .clone()
-        .unwrap_or_else(|| PathBuf::from("scenes/many-lights.toml"));
+    let default = if args.aa {
+        "scenes/antialiasing.toml"
+    } else {
+        "scenes/many-lights.toml"
+    };
+    let scene_path = (args.scene.clone()).unwrap_or_else(|| PathBuf::from(default));
     let scene_path = crate::assets::scene_path(&scene_path);
     let base = Scene::load(&scene_path)?;
     let ctx = Headless::new(backend, false)?;
     let software = ctx.info.renderer.contains("llvmpipe") || ctx.info.renderer.contains("softpipe");
+    if args.aa {
+        return aa::run(args, &scene_path, &ctx);
+    }
     if !args.vary.is_empty() {
         return variants::run(args, &scene_path, &ctx, software);
     }

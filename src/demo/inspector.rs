@@ -129,6 +129,11 @@ pub fn views(plan: &FramePlan, has_volumes: bool, shadows: &[ShadowView]) -> Vec
         })
         .collect();
     for t in &plan.targets {
+        // A multisampled target (MSAA) cannot be sampled as a sampler2D: its
+        // resolved image is the world's target, shown with it.
+        if t.samples > 1 {
+            continue;
+        }
         for (i, &(name, format)) in t.colors.iter().enumerate() {
             let color = |mode| View {
                 target: t.name,

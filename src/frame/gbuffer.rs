@@ -34,6 +34,7 @@ pub const NAME: &str = "gbuffer";
 pub fn target(thin: bool) -> TargetDesc {
     TargetDesc {
         name: NAME,
+        samples: 1,
         colors: if thin {
             vec![NORMAL]
         } else {

@@ -10,6 +10,7 @@
 //! - `gbuffer`: the G-buffer's layout, written by one technique and read by many.
 //! - `targets`: the render targets the plan names, allocated and sized.
 //! - `meshes`: the meshes every screen or volume pass draws.
+//! - `multisample`: the world's multisampled twin (MSAA on the forward path).
 //! - `timing`: pass times around glFinish.
 //! - `post`: the post chain's steps, what each reads and writes.
 //! - `views`: the camera's view and the reflected views mirrors add.
@@ -19,6 +20,7 @@ pub mod draw_list;
 pub mod gbuffer;
 pub mod lights;
 pub mod meshes;
+pub mod multisample;
 pub mod plan;
 pub mod post;
 pub mod shadows;

@@ -21,6 +21,7 @@
 //!   into framebuffer `post_{s+1}`, step s + 1 samples it.
 
 use crate::frame::Frame;
+use crate::frame::multisample;
 use crate::frame::targets::{Depth, OUTPUT, TargetDesc, Targets};
 use crate::frame::uniforms::unit;
 use crate::gl::program::Program;
@@ -49,8 +50,20 @@ pub const CASCADE: [&str; MAX_STEPS] = [
     "post_26", "post_27", "post_28", "post_29", "post_30", "post_31", "post_32",
 ];
 
-/// Where every view draws the world: the output, or `HDR` when a chain follows.
+/// Where every view draws the world: the multisampled twin with MSAA
+/// (src/frame/multisample.rs, resolved into `world_image` after the views),
+/// else `world_image`.
 pub fn world_target(scene: &Scene) -> &'static str {
+    if multisample::active(scene) {
+        multisample::MSAA
+    } else {
+        world_image(scene)
+    }
+}
+
+/// The finished world image (its depth and stencil are the frame's): the
+/// output, or `HDR` when a chain follows.
+pub fn world_image(scene: &Scene) -> &'static str {
     if scene.post.is_empty() { OUTPUT } else { HDR }
 }
 
@@ -126,6 +139,7 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
     }
     let mut v = vec![TargetDesc {
         name: HDR,
+        samples: 1,
         colors: vec![("color", HDR_FORMAT)],
         depth: Depth::Own(glow::DEPTH24_STENCIL8),
         ping_pong: false,
@@ -134,6 +148,7 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
     match scene.render.post_chain {
         ChainForm::PingPong if steps > 1 => v.push(TargetDesc {
             name: PING_PONG,
+            samples: 1,
             colors: vec![("ping", HDR_FORMAT), ("pong", HDR_FORMAT)],
             depth: Depth::None,
             ping_pong: true,
@@ -142,6 +157,7 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
         ChainForm::PingPong => {}
         ChainForm::Cascaded => v.extend(CASCADE[..steps - 1].iter().map(|&name| TargetDesc {
             name,
+            samples: 1,
             colors: vec![("color", HDR_FORMAT)],
             depth: Depth::None,
             ping_pong: false,

@@ -9,6 +9,7 @@ use crate::gl::framebuffer::Framebuffer;
 use crate::gl::mip_target::MipTarget;
 use crate::gl::texture::{Texture, max_level};
 use anyhow::{Result, anyhow};
+use glow::HasContext;
 
 /// The final image: the window shows it, `gloss render` writes it.
 pub const OUTPUT: &str = "output";
@@ -29,6 +30,9 @@ pub enum Depth {
 #[derive(Clone, Debug, PartialEq)]
 pub struct TargetDesc {
     pub name: &'static str,
+    /// Samples per pixel: 1, or more for a multisampled target (MSAA,
+    /// src/frame/multisample.rs), clamped to what the GL allows when made.
+    pub samples: u32,
     /// (attachment name, GL internal format), GL_COLOR_ATTACHMENT0 first.
     pub colors: Vec<(&'static str, u32)>,
     pub depth: Depth,
@@ -52,6 +56,7 @@ impl TargetDesc {
     pub fn output(format: u32, depth: bool) -> TargetDesc {
         TargetDesc {
             name: OUTPUT,
+            samples: 1,
             colors: vec![("color", format)],
             depth: if depth {
                 Depth::Own(glow::DEPTH24_STENCIL8)
@@ -78,6 +83,9 @@ impl TargetDesc {
         if let Some((first, last)) = self.mips {
             v.push(format!("mip levels {first}..={last}, one framebuffer each"));
         }
+        if self.samples > 1 {
+            v.push(format!("{} samples", self.samples));
+        }
         v
     }
 }
@@ -94,6 +102,39 @@ pub fn format_name(format: u32) -> &'static str {
         glow::DEPTH_COMPONENT32F => "DEPTH_COMPONENT32F",
         _ => "(unnamed format)",
     }
+}
+
+/// How many samples target `d` gets: its own count, clamped to what this
+/// GL allows for colour and depth textures (GL_MAX_SAMPLES,
+/// GL_MAX_COLOR_TEXTURE_SAMPLES, GL_MAX_DEPTH_TEXTURE_SAMPLES), with a
+/// message on stderr when it is clamped.
+fn allowed_samples(gl: &Gl, d: &TargetDesc) -> Result<i32> {
+    if d.samples <= 1 {
+        return Ok(1);
+    }
+    let mut max = i32::MAX;
+    for p in [
+        glow::MAX_SAMPLES,
+        glow::MAX_COLOR_TEXTURE_SAMPLES,
+        glow::MAX_DEPTH_TEXTURE_SAMPLES,
+    ] {
+        max = max.min(unsafe { gl.get_parameter_i32(p) });
+    }
+    if max < 2 {
+        anyhow::bail!(
+            "target {}: {} samples asked, but this GL has no multisampled textures (GL_MAX_SAMPLES = {max}): set render.msaa = 1",
+            d.name,
+            d.samples
+        );
+    }
+    if d.samples as i32 > max {
+        eprintln!(
+            "gloss: render.msaa = {}, but this GL allows at most {max} samples per pixel (GL_MAX_SAMPLES): using {max}",
+            d.samples
+        );
+        return Ok(max);
+    }
+    Ok(d.samples as i32)
 }
 
 /// The allocated targets of one plan.
@@ -119,16 +160,18 @@ impl Targets {
                 }
                 continue;
             }
+            let samples = allowed_samples(gl, d)?;
+            let texture = |format| match samples {
+                1 => Texture::render_target(gl, width, height, format),
+                n => Texture::render_target_multisample(gl, width, height, format, n),
+            };
             let mut colors = Vec::with_capacity(d.colors.len());
             for &(_, format) in &d.colors {
-                colors.push(Texture::render_target(gl, width, height, format)?);
+                colors.push(texture(format)?);
             }
             let (own, shared) = match d.depth {
                 Depth::None => (None, None),
-                Depth::Own(format) => (
-                    Some(Texture::render_target(gl, width, height, format)?),
-                    None,
-                ),
+                Depth::Own(format) => (Some(texture(format)?), None),
                 Depth::SharedWith(other) => {
                     let fb = targets.iter().find(|t| t.name == other).ok_or_else(|| {
                         anyhow!("target {} shares the depth of {other}, which comes later or not at all", d.name)

@@ -66,7 +66,7 @@ impl Framebuffer {
             let mut draw = Vec::new();
             for (i, t) in colors.iter().enumerate() {
                 let at = glow::COLOR_ATTACHMENT0 + i as u32;
-                gl.framebuffer_texture_2d(glow::FRAMEBUFFER, at, glow::TEXTURE_2D, Some(t.id), 0);
+                gl.framebuffer_texture_2d(glow::FRAMEBUFFER, at, t.target(), Some(t.id), 0);
                 draw.push(at);
             }
             if let Some(d) = depth_stencil.as_ref().or(shared_depth) {
@@ -76,7 +76,7 @@ impl Framebuffer {
                     }
                     _ => glow::DEPTH_ATTACHMENT,
                 };
-                gl.framebuffer_texture_2d(glow::FRAMEBUFFER, at, glow::TEXTURE_2D, Some(d.id), 0);
+                gl.framebuffer_texture_2d(glow::FRAMEBUFFER, at, d.target(), Some(d.id), 0);
             }
             if draw.is_empty() {
                 gl.draw_buffer(glow::NONE);

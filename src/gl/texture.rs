@@ -40,6 +40,9 @@ pub struct Texture {
     pub width: i32,
     pub height: i32,
     pub internal_format: u32,
+    /// Samples per pixel: 1 for a GL_TEXTURE_2D, more for a
+    /// GL_TEXTURE_2D_MULTISAMPLE (`render_target_multisample`).
+    pub samples: i32,
 }
 
 impl Texture {
@@ -76,7 +79,59 @@ impl Texture {
                 width,
                 height,
                 internal_format,
+                samples: 1,
             })
+        }
+    }
+
+    /// An empty GL_TEXTURE_2D_MULTISAMPLE of `samples` samples per pixel to
+    /// render into (MSAA, src/techniques/fragment_tests/msaa.rs): it is
+    /// never sampled, only resolved with glBlitFramebuffer. GL may give more
+    /// samples than asked; `samples` holds what it gave (GL_TEXTURE_SAMPLES).
+    pub fn render_target_multisample(
+        gl: &Gl,
+        width: i32,
+        height: i32,
+        internal_format: u32,
+        samples: i32,
+    ) -> Result<Texture> {
+        unsafe {
+            let id = gl
+                .create_texture()
+                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            super::live::made(super::live::Kind::Texture);
+            gl.bind_texture(glow::TEXTURE_2D_MULTISAMPLE, Some(id));
+            gl.tex_image_2d_multisample(
+                glow::TEXTURE_2D_MULTISAMPLE,
+                samples,
+                internal_format as i32,
+                width,
+                height,
+                true,
+            );
+            let given = gl.get_tex_level_parameter_i32(
+                glow::TEXTURE_2D_MULTISAMPLE,
+                0,
+                glow::TEXTURE_SAMPLES,
+            );
+            gl.bind_texture(glow::TEXTURE_2D_MULTISAMPLE, None);
+            Ok(Texture {
+                gl: gl.clone(),
+                id,
+                width,
+                height,
+                internal_format,
+                samples: given.max(samples),
+            })
+        }
+    }
+
+    /// GL_TEXTURE_2D, or GL_TEXTURE_2D_MULTISAMPLE for more than one sample.
+    pub fn target(&self) -> u32 {
+        if self.samples > 1 {
+            glow::TEXTURE_2D_MULTISAMPLE
+        } else {
+            glow::TEXTURE_2D
         }
     }
 
@@ -138,6 +193,7 @@ impl Texture {
                 width: width as i32,
                 height: height as i32,
                 internal_format: internal,
+                samples: 1,
             })
         }
     }
@@ -215,6 +271,7 @@ impl Texture {
                 width,
                 height,
                 internal_format,
+                samples: 1,
             })
         }
     }

@@ -10,8 +10,9 @@ pub use output::{Output, stencil_color, stencil_image};
 use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, max_lights};
 use crate::frame::meshes::FrameMeshes;
+use crate::frame::multisample;
 use crate::frame::plan::{FramePlan, Pass};
-use crate::frame::post::world_target;
+use crate::frame::post::world_image;
 use crate::frame::shadows::ShadowMaps;
 use crate::frame::targets::{OUTPUT, TargetDesc, Targets};
 use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
@@ -243,10 +244,10 @@ impl Renderer {
         self.targets.get(OUTPUT)
     }
 
-    /// Where the world is drawn: the output, or the HDR target a post chain
-    /// reads (its depth and stencil are the frame's).
+    /// The world image: the output, or the HDR target a post chain reads
+    /// (its depth and stencil are the frame's; with MSAA, resolved into it).
     pub fn world(&self) -> &Framebuffer {
-        self.targets.get(world_target(&self.scene))
+        self.targets.get(world_image(&self.scene))
     }
 
     /// The camera's uniforms, for `view`: a reflected view draws the world
@@ -326,13 +327,21 @@ impl Renderer {
     }
 }
 
-/// The plan's targets, with the output's colour format as `output` asks.
+/// The plan's targets, with the output's colour format as `output` asks
+/// (and its multisampled twin's, which is resolved into it).
 fn target_descs(plan: &FramePlan, output: Output) -> Vec<TargetDesc> {
     let mut descs = plan.targets.clone();
+    let twin = multisample::twins_output(&plan.targets);
     for d in &mut descs {
         // The plan says RGBA8 or SRGB8_ALPHA8; error measurements want RGBA32F.
         if d.name == OUTPUT && output == Output::Linear32F {
             d.colors[0].1 = output.format();
+        }
+    }
+    let format = (descs.iter().find(|d| d.name == OUTPUT)).map(|d| d.colors[0].1);
+    for d in &mut descs {
+        if let (true, Some(format)) = (d.name == multisample::MSAA && twin, format) {
+            d.colors[0].1 = format;
         }
     }
     descs

@@ -94,6 +94,8 @@ pub(super) struct RenderFile {
     pub(super) billboard_alpha_ref: f32,
     pub(super) sort_transparent: bool,
     pub(super) post_chain: super::settings::ChainForm,
+    /// Samples per pixel on the forward path (1: no MSAA).
+    pub(super) msaa: u32,
 }
 
 impl Default for RenderFile {
@@ -116,6 +118,7 @@ impl Default for RenderFile {
             billboard_alpha_ref: 0.5,
             sort_transparent: true,
             post_chain: super::settings::ChainForm::PingPong,
+            msaa: 1,
         }
     }
 }

@@ -62,6 +62,10 @@ impl Knob {
             (Value::Bool(b), _) => b.to_string(),
             (Value::Number(x), _) => format!("{x:?}"),
             (Value::Count(n), _) => n.to_string(),
+            // A choice among numbers (render.msaa) is written as the number.
+            (Value::Choice(i), Kind::Choice(words)) if words[i].parse::<u32>().is_ok() => {
+                words[i].to_string()
+            }
             (Value::Choice(i), Kind::Choice(words)) => format!("\"{}\"", words[i]),
             (Value::Color(c), _) => format!("[{:?}, {:?}, {:?}]", c.x, c.y, c.z),
             (Value::Choice(i), _) => i.to_string(),
@@ -288,6 +292,19 @@ pub static SORT_TRANSPARENT: Knob = Knob {
     },
 };
 
+pub static MSAA: Knob = Knob {
+    key: "render.msaa",
+    label: "MSAA samples",
+    help: "samples per pixel of the world on the forward path, resolved with glBlitFramebuffer (1: no MSAA)",
+    kind: Kind::Choice(&["1", "2", "4", "8"]),
+    get: |r| Value::Choice(index(&super::resolve::MSAA_SAMPLES, r.msaa)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.msaa = super::resolve::MSAA_SAMPLES[i];
+        }
+    },
+};
+
 /// Every knob, in the order the panel shows the frame-wide ones.
 pub static ALL: &[&Knob] = &[
     &PATH,
@@ -306,6 +323,7 @@ pub static ALL: &[&Knob] = &[
     &BILLBOARD_ALPHA_REF,
     &SORT_TRANSPARENT,
     &POST_CHAIN,
+    &MSAA,
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

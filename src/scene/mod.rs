@@ -14,6 +14,7 @@ mod alpha_test;
 mod billboards;
 pub mod bloom;
 mod file;
+pub mod fxaa;
 pub mod knobs;
 mod light_grid;
 mod lights;
@@ -114,6 +115,9 @@ pub struct RenderSettings {
     pub sort_transparent: bool,
     /// How the post chain passes its image along (src/scene/post.rs).
     pub post_chain: post::ChainForm,
+    /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4
+    /// or 8 (src/techniques/fragment_tests/msaa.rs); 1 is no MSAA.
+    pub msaa: u32,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

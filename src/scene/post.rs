@@ -22,6 +22,7 @@
 //! pass and the key.
 
 use super::bloom::Bloom;
+use super::fxaa::Fxaa;
 use super::post_entry::Entry;
 pub use super::settings::ChainForm;
 use anyhow::{Result, bail};
@@ -135,10 +136,12 @@ pub enum PostPass {
     Kernel(Kernel3),
     Grayscale,
     Invert,
+    /// FXAA 3.11 (src/scene/fxaa.rs): after a tonemap, before gamma.
+    Fxaa(Fxaa),
 }
 
 /// The pass names a `[[post]]` entry may give.
-pub const PASS_NAMES: [&str; 11] = [
+pub const PASS_NAMES: [&str; 12] = [
     "bloom",
     "tonemap",
     "gamma",
@@ -150,6 +153,7 @@ pub const PASS_NAMES: [&str; 11] = [
     "emboss",
     "grayscale",
     "invert",
+    "fxaa",
 ];
 
 impl PostPass {
@@ -164,6 +168,7 @@ impl PostPass {
             PostPass::Kernel(_) => "kernel",
             PostPass::Grayscale => "grayscale",
             PostPass::Invert => "invert",
+            PostPass::Fxaa(_) => "fxaa",
         }
     }
 
@@ -273,6 +278,7 @@ impl PostPass {
                 e.only(&[])?;
                 PostPass::Invert
             }
+            "fxaa" => PostPass::Fxaa(Fxaa::parse(&e)?),
             other => bail!(
                 "post[{i}].pass: unknown pass \"{other}\" (one of {})",
                 PASS_NAMES.join(", ")
@@ -318,6 +324,7 @@ impl PostPass {
                 };
                 t.insert("kernel".into(), v);
             }
+            PostPass::Fxaa(x) => t.extend(x.table()),
             PostPass::Grayscale | PostPass::Invert => {}
         }
         t
@@ -342,6 +349,15 @@ pub fn chain(entries: &[toml::Table]) -> Result<Vec<PostPass>> {
         .map(|(i, t)| PostPass::parse(t, i))
         .collect::<Result<Vec<_>>>()?;
     for (i, p) in chain.iter().enumerate() {
+        // FXAA's thresholds are for display-range luma (docs/post/fxaa.md).
+        let tonemapped = chain[..i]
+            .iter()
+            .any(|q| matches!(q, PostPass::Tonemap { .. }));
+        if matches!(p, PostPass::Fxaa(_)) && !tonemapped {
+            bail!(
+                "post[{i}] (fxaa): FXAA reads display-range colour: put a tonemap pass before it (after tonemap, before gamma)"
+            );
+        }
         let last = i + 1 == chain.len();
         match (p, last) {
             (PostPass::Gamma { .. }, false) => bail!(

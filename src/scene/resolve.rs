@@ -30,6 +30,9 @@ pub(super) fn non_negative(key: &str, v: &[f32]) -> Result<()> {
 /// pass over the world, and the stencil buffer's 8 bits count the levels.
 pub const MAX_MIRROR_DEPTH: u32 = 8;
 
+/// The sample counts `render.msaa` takes.
+pub const MSAA_SAMPLES: [u32; 4] = [1, 2, 4, 8];
+
 /// Checks every section of `f` (read from `path`) and builds the [`Scene`].
 pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
     let base = path.parent().unwrap_or(Path::new("."));
@@ -143,6 +146,15 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         sort_transparent: r.sort_transparent,
         post_chain: r.post_chain,
+        msaa: {
+            if !MSAA_SAMPLES.contains(&r.msaa) {
+                bail!(
+                    "render.msaa: expected 1, 2, 4 or 8 samples per pixel (1: no MSAA), found {}",
+                    r.msaa
+                );
+            }
+            r.msaa
+        },
     })
 }
 

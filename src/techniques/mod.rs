@@ -37,11 +37,15 @@ pub static ALL: &[&Technique] = &[
     &fragment_tests::viewports::VIEWPORTS,
     &billboards::billboards::BILLBOARDS,
     &blending::transparency::TRANSPARENCY,
-    // The post chain: after every view, in the scene's [[post]] order.
+    // After every view: first the MSAA resolve (registered before the chain,
+    // item 0: the plan's sort by entry is stable), then the post chain, in
+    // the scene's [[post]] order.
+    &fragment_tests::msaa::MSAA_RESOLVE,
     &post::blur::BLUR,
     &post::kernel::KERNEL,
     &post::color_filters::COLOR_FILTERS,
     &post::tone_mapping::TONE_MAPPING,
+    &post::fxaa::FXAA,
     &post::gamma_correction::GAMMA_CORRECTION,
     &post::bloom::BLOOM,
 ];

@@ -349,7 +349,10 @@ fn scene_float_out_of_f32_range() {
     assert!(!msg.contains("inf"), "{msg}");
     scene_fails(
         "scene_float_out_of_f32_range_in_an_array",
-        &base_with("position = [1.0, 2.0, -0.5]", "position = [1.0, -1e300, -0.5]"),
+        &base_with(
+            "position = [1.0, 2.0, -0.5]",
+            "position = [1.0, -1e300, -0.5]",
+        ),
         &["lights[0].position[1]", "out of range of a 32-bit float"],
     );
 }

@@ -11,11 +11,15 @@
 //!   errors naming the pass and the key, and the HDR target keeps 256
 //!   lights unclipped.
 //!
+//! * anti-aliasing of the final image (notes 01 §8.6): FXAA in the chain,
+//!   MSAA on the forward path, against a supersampled reference.
+//!
 //! Every render runs with GL debug output on and fails on any GL error.
 
 #[path = "../common/mod.rs"]
 mod common;
 
+mod aa;
 mod bloom;
 mod chain;
 mod forms;

@@ -91,6 +91,7 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
     let format = scene.render.accumulation.gl();
     vec![TargetDesc {
         name: LIGHT_ACCUMULATION,
+        samples: 1,
         colors: vec![("diffuse_light", format), ("specular_light", format)],
         depth: Depth::Own(gbuffer::DEPTH),
         ping_pong: false,

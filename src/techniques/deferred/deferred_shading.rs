@@ -72,6 +72,7 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
 pub fn accumulation_target(scene: &Scene, depth: Depth) -> TargetDesc {
     TargetDesc {
         name: LIGHT_ACCUMULATION,
+        samples: 1,
         colors: vec![("light", scene.render.accumulation.gl())],
         depth,
         ping_pong: false,

@@ -54,6 +54,8 @@ pub const FORWARD: Technique = Technique {
         &knobs::DEPTH_FUNC,
         &knobs::AMBIENT,
         &knobs::BACKGROUND,
+        // MSAA is for the forward path (fragment_tests/msaa.rs): offered here.
+        &knobs::MSAA,
     ],
     passes,
     targets,

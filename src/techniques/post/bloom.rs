@@ -157,6 +157,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
 fn mip_target(name: &'static str, first: u32, last: u32) -> TargetDesc {
     TargetDesc {
         name,
+        samples: 1,
         colors: vec![("color", FORMAT)],
         depth: Depth::None,
         ping_pong: false,

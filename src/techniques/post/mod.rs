@@ -7,6 +7,7 @@ pub mod bloom;
 pub mod bloom_levels;
 pub mod blur;
 pub mod color_filters;
+pub mod fxaa;
 pub mod gamma_correction;
 pub mod kernel;
 pub mod tone_mapping;

@@ -5,6 +5,7 @@
 uniform sampler2D u_image;   // the previous image
 uniform float u_kernel[9];   // row by row from the top
 out vec4 frag_color;
+#include "post/finite.glsl"
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -14,7 +15,7 @@ void main() {
         for (int col = 0; col < 3; col++) {
             // Past the edge, the edge pixel repeats (clamp to edge).
             ivec2 q = clamp(p + ivec2(col - 1, 1 - row), ivec2(0), last);
-            sum += u_kernel[row * 3 + col] * texelFetch(u_image, q, 0).rgb;
+            sum += u_kernel[row * 3 + col] * finite(texelFetch(u_image, q, 0).rgb);
         }
     }
     frag_color = vec4(sum, 1.0);

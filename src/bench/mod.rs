@@ -17,6 +17,7 @@
 mod args;
 mod csv;
 mod plot;
+mod post;
 pub mod shadows;
 mod stats;
 mod table;
@@ -196,7 +197,13 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         )?);
     }
     eprintln!();
-    finish(&rows, args)
+    finish(&rows, args)?;
+    if !base.post.is_empty() {
+        let mut scene = base.clone();
+        scene.render.size = (w, h);
+        println!("{}", post::floor_table(&ctx, args, &scene)?);
+    }
+    Ok(())
 }
 
 /// Print the table, write the CSV and the plot.
@@ -289,7 +296,7 @@ fn measure(
 
 /// Add one frame's pass times to `passes`: a pass that runs several times
 /// in a frame (the world drawn once per mirror view) counts once, summed.
-fn add_pass_times(passes: &mut Vec<(String, Vec<f64>)>, frame: &[(&'static str, f64)]) {
+pub(crate) fn add_pass_times(passes: &mut Vec<(String, Vec<f64>)>, frame: &[(&'static str, f64)]) {
     let mut sums: Vec<(&str, f64)> = Vec::new();
     for &(name, ms) in frame {
         match sums.iter_mut().find(|(n, _)| *n == name) {

@@ -97,7 +97,11 @@ pub(super) fn run(
         rows.push(row);
     }
     eprintln!();
-    finish(&rows, args)
+    finish(&rows, args)?;
+    if !reference_scene.post.is_empty() {
+        println!("{}", super::post::floor_table(ctx, args, &reference_scene)?);
+    }
+    Ok(())
 }
 
 #[cfg(test)]

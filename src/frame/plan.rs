@@ -86,6 +86,9 @@ pub struct FramePlan {
     pub passes: Vec<Pass>,
     /// The views the world is drawn for: the camera's first.
     pub views: Vec<View>,
+    /// The frame's size as the scene gives it (every target is this size;
+    /// the demo's window and `--size` may change it).
+    pub size: (u32, u32),
     /// The camera's depth precision (notes 01 §4.4): the smallest eye-space
     /// depth difference the 24-bit depth buffer resolves, (z, dz) at a few
     /// distances (src/math/depth.rs).
@@ -207,6 +210,7 @@ impl FramePlan {
             targets,
             passes,
             views: order.views,
+            size: scene.render.size,
             depth_precision: DepthPrecision::new(scene),
         }
     }
@@ -223,7 +227,8 @@ impl FramePlan {
 impl std::fmt::Display for FramePlan {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         writeln!(f, "path: {}", self.path.name())?;
-        writeln!(f, "render targets:")?;
+        let (w, h) = self.size;
+        writeln!(f, "render targets ({w}x{h}):")?;
         for t in &self.targets {
             writeln!(f, "  {:<20} {}", t.name, t.attachments().join(", "))?;
         }

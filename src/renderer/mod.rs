@@ -330,7 +330,8 @@ impl Renderer {
 fn target_descs(plan: &FramePlan, output: Output) -> Vec<TargetDesc> {
     let mut descs = plan.targets.clone();
     for d in &mut descs {
-        if d.name == OUTPUT {
+        // The plan says RGBA8 or SRGB8_ALPHA8; error measurements want RGBA32F.
+        if d.name == OUTPUT && output == Output::Linear32F {
             d.colors[0].1 = output.format();
         }
     }

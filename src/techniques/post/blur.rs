@@ -10,9 +10,10 @@
 //! bilinear fetch between two texels reads both with their two weights
 //! (`math::gaussian::linear_taps`): r + 1 fetches instead of 2r + 1.
 //!
-//! GL state: a sampler object on unit::POST_INPUT while it draws (linear
-//! filtering, clamp to edge: the textures themselves stay GL_NEAREST), unbound
-//! after; otherwise the chain's (src/frame/post.rs `run_step`).
+//! GL state: a sampler object on unit::POST_INPUT while it draws (clamp to
+//! edge; GL_LINEAR for linear taps, GL_NEAREST for direct ones, which then
+//! cost one texel read each), unbound after; otherwise the chain's
+//! (src/frame/post.rs `run_step`).
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
@@ -101,9 +102,26 @@ fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
 
 struct Blur {
     program: Program,
-    /// Linear filtering and clamp to edge, whatever the texture's own settings.
-    sampler: glow::Sampler,
+    /// Clamp to edge, whatever the texture's own settings; GL_NEAREST for
+    /// direct taps (one texel each, no filtering work), GL_LINEAR for
+    /// linear taps.
+    nearest: glow::Sampler,
+    linear: glow::Sampler,
     gl: crate::gl::Gl,
+}
+
+/// A sampler object reading with `filter` and clamping to the edge.
+fn sampler(gl: &glow::Context, filter: u32) -> Result<glow::Sampler> {
+    unsafe {
+        let s = gl
+            .create_sampler()
+            .map_err(|e| anyhow!("glGenSamplers: {e}"))?;
+        gl.sampler_parameter_i32(s, glow::TEXTURE_MIN_FILTER, filter as i32);
+        gl.sampler_parameter_i32(s, glow::TEXTURE_MAG_FILTER, filter as i32);
+        gl.sampler_parameter_i32(s, glow::TEXTURE_WRAP_S, glow::CLAMP_TO_EDGE as i32);
+        gl.sampler_parameter_i32(s, glow::TEXTURE_WRAP_T, glow::CLAMP_TO_EDGE as i32);
+        Ok(s)
+    }
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -112,26 +130,20 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::FRAGMENT_SHADER, "post/blur.frag"),
     ])?;
     let gl = p.gl;
-    let sampler = unsafe {
-        let s = gl
-            .create_sampler()
-            .map_err(|e| anyhow!("glGenSamplers: {e}"))?;
-        gl.sampler_parameter_i32(s, glow::TEXTURE_MIN_FILTER, glow::LINEAR as i32);
-        gl.sampler_parameter_i32(s, glow::TEXTURE_MAG_FILTER, glow::LINEAR as i32);
-        gl.sampler_parameter_i32(s, glow::TEXTURE_WRAP_S, glow::CLAMP_TO_EDGE as i32);
-        gl.sampler_parameter_i32(s, glow::TEXTURE_WRAP_T, glow::CLAMP_TO_EDGE as i32);
-        s
-    };
     Ok(Box::new(Blur {
         program,
-        sampler,
+        nearest: sampler(gl, glow::NEAREST)?,
+        linear: sampler(gl, glow::LINEAR)?,
         gl: gl.clone(),
     }))
 }
 
 impl Drop for Blur {
     fn drop(&mut self) {
-        unsafe { self.gl.delete_sampler(self.sampler) }
+        unsafe {
+            self.gl.delete_sampler(self.nearest);
+            self.gl.delete_sampler(self.linear);
+        }
     }
 }
 
@@ -143,7 +155,11 @@ impl RunPasses for Blur {
         let weights: Vec<f32> = taps.iter().map(|t| t.1).collect();
         let gl = f.gl;
         unsafe {
-            gl.bind_sampler(unit::POST_INPUT, Some(self.sampler));
+            let sampler = match how {
+                Taps::Direct => self.nearest,
+                Taps::Linear => self.linear,
+            };
+            gl.bind_sampler(unit::POST_INPUT, Some(sampler));
             post::run_step(f, &self.program, pass.value as usize, |p| {
                 // Step 0 blurs along the rows, step 1 along the columns.
                 let direction = if pass.step == 0 {

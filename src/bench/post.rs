@@ -1,0 +1,106 @@
+//! The post chain against its fill-rate floor: each post pass of a scene's
+//! chain timed (median over the measured frames, glFinish around each
+//! pass), against what the same number of full-screen steps would cost at
+//! the opaque full-screen rate of this machine. That rate is measured in
+//! the same run: the `invert` pass (one texel fetch, one RGBA16F write a
+//! pixel) of a chain drawn at the same size.
+//!
+//! A pass near 1x is bound by filling pixels; far above, by its own work
+//! per pixel (a blur's taps, bloom's levels).
+
+use super::{BenchArgs, Headless, Stats, add_pass_times};
+use crate::frame::Runs;
+use crate::gl::program::Sources;
+use crate::renderer::Renderer;
+use crate::scene::Scene;
+use crate::scene::post::chain;
+use crate::techniques::ALL;
+use anyhow::Result;
+
+/// Each post pass's median time (ms) over `args.frames` frames after the
+/// warm-up, in chain order, with the number of full-screen steps it draws.
+fn post_times(
+    ctx: &Headless,
+    args: &BenchArgs,
+    scene: &Scene,
+) -> Result<Vec<(String, f64, usize)>> {
+    let (w, h) = scene.render.size;
+    let mut r = Renderer::new(
+        &ctx.gl,
+        &ctx.debug,
+        scene,
+        &Sources::Embedded,
+        w as i32,
+        h as i32,
+    )?;
+    r.timing = true;
+    let mut passes = Vec::new();
+    for f in 0..args.warmup + args.frames.max(1) {
+        r.render(&scene.camera)?;
+        if f >= args.warmup {
+            add_pass_times(&mut passes, &r.last_times.passes);
+        }
+    }
+    // The post passes, by name, with the steps their entries take.
+    let mut out: Vec<(String, f64, usize)> = Vec::new();
+    for p in r
+        .plan
+        .passes
+        .iter()
+        .filter(|p| ALL[p.technique].runs == Runs::AfterViews)
+    {
+        if out.iter().any(|(n, _, _)| n == p.name) {
+            continue;
+        }
+        // A separable blur is two passes of one name; two entries of one
+        // kind are summed (as `add_pass_times` sums their times).
+        let steps = (r.plan.passes.iter()).filter(|q| q.name == p.name).count();
+        let ms = (passes.iter_mut())
+            .find(|(n, _)| n == p.name)
+            .map_or(0.0, |(_, v)| Stats::from_samples(v).median);
+        out.push((p.name.to_string(), ms, steps));
+    }
+    Ok(out)
+}
+
+/// The table: each post pass's time, its floor and the ratio, then the
+/// whole chain's.
+pub fn floor_table(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<String> {
+    let (w, h) = scene.render.size;
+    // The opaque full-screen rate: one invert step at this size.
+    let mut probe = scene.clone();
+    probe.post = chain(&[
+        toml::from_str("pass = \"invert\"")?,
+        toml::from_str("pass = \"gamma\"")?,
+    ])?;
+    let step_ms = post_times(ctx, args, &probe)?
+        .into_iter()
+        .find(|(n, _, _)| n == "invert")
+        .map_or(0.0, |(_, ms, _)| ms);
+    let mpix = f64::from(w) * f64::from(h) / 1e6;
+    let mut s = format!(
+        "post chain at {w}x{h}: opaque full-screen rate {:.1} Mpixel/s (one invert step: {step_ms:.2} ms)\n",
+        mpix / (step_ms / 1e3)
+    );
+    s.push_str(&format!(
+        "  {:<18} {:>6} {:>10} {:>10} {:>8}\n",
+        "pass", "steps", "ms", "floor ms", "x floor"
+    ));
+    let (mut total, mut floor) = (0.0, 0.0);
+    for (name, ms, steps) in post_times(ctx, args, scene)? {
+        let f = steps as f64 * step_ms;
+        s.push_str(&format!(
+            "  {name:<18} {steps:>6} {ms:>10.2} {f:>10.2} {:>8.2}\n",
+            ms / f
+        ));
+        total += ms;
+        floor += f;
+    }
+    s.push_str(&format!(
+        "  {:<18} {:>6} {total:>10.2} {floor:>10.2} {:>8.2}\n",
+        "whole chain",
+        "",
+        total / floor
+    ));
+    Ok(s)
+}

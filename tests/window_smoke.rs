@@ -256,6 +256,71 @@ fn demo_shows_a_point_lights_shadow_cube_unfolded() {
     }
 }
 
+/// The post chain's last inner image in the window's inspector:
+/// post-effects (tone map, sharpen, gamma 2.2), a screenshot of the frame
+/// (F12), the inspector stepped to `post_ping_pong.pong` ("after step 2 of
+/// 3, kernel", shown as sRGB at exposure 1), a second screenshot. The
+/// output is that texture with gamma 2.2, so the output decoded by 2.2 and
+/// sRGB-encoded is the inspector's picture, to one 8-bit step.
+#[test]
+fn demo_shows_the_post_chains_ping_pong_texture() {
+    use gloss::frame::lights::FrameLights;
+    use gloss::frame::plan::FramePlan;
+    let scene = gloss::scene::Scene::load(&crate_dir().join("scenes/post-effects.toml")).unwrap();
+    let plan = FramePlan::new(&scene, &FrameLights::new(&scene), gloss::techniques::ALL);
+    let views = gloss::demo::inspector::views(&plan, false, &[]);
+    let pong = (views.iter())
+        .position(|v| v.target == "post_ping_pong" && v.attachment == "pong")
+        .expect("the ping-pong pair's second texture is a view");
+    let script = format!(
+        r#"
+        "{GLOSS}" --backend window --debug --frames 200000 post-effects > gloss.log 2>&1 &
+        pid=$!
+        wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
+        xdotool windowfocus --sync "$wid"
+        sleep 3
+        # A frame may take seconds on a loaded machine: each screenshot is
+        # waited for, so that no key reaches the demo before it is taken.
+        xdotool key --clearmodifiers F12
+        while [ ! -f gloss-screenshot-1.png ]; do sleep 0.2; done
+        for i in $(seq {presses}); do xdotool key --clearmodifiers i; sleep 0.3; done
+        xdotool key --clearmodifiers F12
+        while [ ! -f gloss-screenshot-2.png ]; do sleep 0.2; done
+        sleep 1
+        xdotool key Escape
+        wait $pid
+        "#,
+        presses = pong + 1
+    );
+    let Some((dir, log)) = drive("gloss-demo-post-chain", "1280x720x24", &script) else {
+        return;
+    };
+    let shot = |n: u32| {
+        let p = dir.join(format!("gloss-screenshot-{n}.png"));
+        image::open(&p)
+            .unwrap_or_else(|e| panic!("{}: {e}\n--- gloss.log ---\n{log}", p.display()))
+            .to_rgba8()
+    };
+    let (output, inspected) = (shot(1), shot(2));
+    assert_eq!(output.dimensions(), inspected.dimensions());
+    let (mut far, mut lit) = (0, 0);
+    for (o, s) in output.pixels().zip(inspected.pixels()) {
+        for c in 0..3 {
+            let linear = (f32::from(o.0[c]) / 255.0).powf(2.2);
+            let want = gloss::lighting::srgb_encode(linear) * 255.0;
+            far += usize::from((f32::from(s.0[c]) - want).abs() > 1.0);
+            lit += usize::from(s.0[c] > 20);
+        }
+    }
+    let n = 3 * output.pixels().len();
+    // The ping texture, before the sharpen, is about 1% off.
+    assert!(far * 1000 < n, "{far} of {n} channels more than 1 step off");
+    assert!(
+        lit * 4 > n,
+        "the inspected texture is mostly dark: {lit} of {n}"
+    );
+}
+
 /// The window resized by the X server: very large (3840 x 2160), 1 x 1,
 /// unmapped and mapped again, and back to 1280 x 720, with GL debug output
 /// on: no GL error, no panic, and the last screenshot has the last size.

@@ -5,8 +5,10 @@
 //   1 normal: n * 0.5 + 0.5                2 shininess: alpha / 256
 //   3 HDR light: exposure x value, encoded  4 depth, linearised near..far
 //   5 a count (volumes over a pixel) as a heat map, u_scale the hottest
+// u_level picks the mip level (0: the image itself), stretched over the view.
 #include "common/lighting_output.glsl"
 uniform sampler2D u_texture;
+uniform float u_level;
 uniform int u_mode;
 uniform bool u_encode;      // mode 0: the texture holds linear colour
 uniform float u_exposure;
@@ -25,7 +27,7 @@ vec3 heat(float t) {
 }
 
 void main() {
-    vec4 t = texture(u_texture, gl_FragCoord.xy / u_viewport);
+    vec4 t = textureLod(u_texture, gl_FragCoord.xy / u_viewport, u_level);
     vec3 c;
     if (u_mode == 0) {
         c = u_encode ? srgb_encode(t.rgb) : t.rgb;

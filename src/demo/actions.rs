@@ -29,6 +29,7 @@ impl Demo {
                 | Action::Lights(_)
                 | Action::Materials(_)
                 | Action::Objects(_)
+                | Action::Post(_)
         ) && let Some(run) = self.running.as_mut()
         {
             run.comparison = None;
@@ -141,6 +142,9 @@ impl Demo {
                         self.set_values(scene)
                     }
                 })
+            }
+            Action::Post(chain) => {
+                super::post_chain::checked(&self.scene, &chain).and_then(|s| self.set_values(s))
             }
             Action::Camera(c) => {
                 self.orbit.set_lens(&c);

@@ -256,9 +256,12 @@ pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
             volumes: None,
             stencil: false,
             shadow: None,
+            level: 0,
+            written: None,
             ..first
         });
     }
+    super::post_chain::name_steps(&mut views, &r.scene, &r.plan);
     views
 }
 

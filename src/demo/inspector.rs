@@ -1,223 +1,51 @@
-//! The pass inspector: any attachment of the frame plan's render targets,
-//! drawn over the window so that it can be seen (normals as colours, depth
-//! linearised, light with an exposure), by a full-screen pass with
-//! glsl/demo/inspect.frag. The list of views comes from the plan, so a
-//! technique's targets appear here as soon as it declares them; each
-//! casting light's shadow map is listed too (src/demo/shadow_views.rs).
+//! The pass inspector: any attachment of the frame plan's render targets
+//! (the views of src/demo/inspect_views.rs), drawn over the window so that
+//! it can be seen (normals as colours, depth linearised, light with an
+//! exposure), by a full-screen pass with glsl/demo/inspect.frag; each
+//! casting light's shadow map by src/demo/shadow_views.rs. A view may show
+//! one mip level of its texture.
 
-use super::shadow_views::ShadowView;
-use super::volume_views::VolumeView;
-use crate::frame::plan::FramePlan;
-use crate::frame::targets::{Depth, Targets, format_name};
+pub use super::inspect_views::{Mode, View, follow, views};
+use crate::frame::targets::Targets;
 use crate::geometry;
 use crate::gl::Gl;
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::mesh::Mesh;
 use crate::gl::program::{Program, Sources};
 use crate::scene::{Camera, Projection};
-use anyhow::Result;
+use anyhow::{Result, anyhow};
 use glam::Mat4;
 use glow::HasContext;
 
-/// How an attachment is made visible (glsl/demo/inspect.frag's u_mode).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Mode {
-    /// Colour as stored; `encode`: linear colour, sRGB-encode it.
-    Color {
-        encode: bool,
-    },
-    Normal,
-    Shininess,
-    /// HDR light, scaled by the exposure.
-    Light,
-    Depth,
-    /// A count, as a heat map from 0 to `scale`.
-    Count {
-        scale: f32,
-    },
-}
-
-/// One view the inspector offers.
-#[derive(Clone, Debug, PartialEq)]
-pub struct View {
-    pub target: &'static str,
-    pub attachment: &'static str,
-    /// None: the depth-stencil attachment.
-    pub color_index: Option<usize>,
-    pub format: u32,
-    pub mode: Mode,
-    /// A view of the light volumes instead of an attachment.
-    pub volumes: Option<VolumeView>,
-    /// The difference image of "compare with reference" instead of an attachment.
-    pub difference: bool,
-    /// The stencil values of the depth-stencil attachment (read back: GL 3.3
-    /// cannot sample stencil), each value its own colour.
-    pub stencil: bool,
-    /// A casting light's shadow map instead of an attachment.
-    pub shadow: Option<ShadowView>,
-}
-
-impl View {
-    /// Whether two views show the same thing. A shadow map stays its
-    /// light's map when its resolution changes.
-    pub fn same_as(&self, other: &View) -> bool {
-        let key = |v: &View| {
-            let shadow = v.shadow.map(|s| s.light);
-            (
-                v.target,
-                v.attachment,
-                v.color_index,
-                v.volumes,
-                v.difference,
-                v.stencil,
-                shadow,
-            )
-        };
-        key(self) == key(other)
-    }
-
-    /// "gbuffer.normal_shininess (RGBA16F)" and what the view shows.
-    pub fn label(&self) -> String {
-        if let Some(v) = self.volumes {
-            return v.label().to_string();
-        }
-        if let Some(s) = &self.shadow {
-            return s.label();
-        }
-        if self.difference {
-            return "difference to the forward reference, x8".to_string();
-        }
-        if self.stencil {
-            return format!(
-                "{}.stencil ({}): each value its own colour, 0 black",
-                self.target,
-                format_name(self.format)
-            );
-        }
-        let shows = match self.mode {
-            Mode::Color { .. } => "colour",
-            Mode::Normal => "normal x 0.5 + 0.5",
-            Mode::Shininess => "shininess / 256",
-            Mode::Light => "light x exposure",
-            Mode::Depth => "depth, linearised",
-            Mode::Count { .. } => "count, as a heat map",
-        };
-        format!(
-            "{}.{} ({}): {shows}",
-            self.target,
-            self.attachment,
-            format_name(self.format)
-        )
-    }
-}
-
-/// Every view of a frame: the shadow map of each casting light (`shadows`:
-/// drawn first in the frame), the plan's targets in the plan's order; then,
-/// when some light has a volume, the three views of the volumes.
-pub fn views(plan: &FramePlan, has_volumes: bool, shadows: &[ShadowView]) -> Vec<View> {
-    let mut v: Vec<View> = (shadows.iter())
-        .map(|s| View {
-            target: "shadow map",
-            attachment: "depth",
-            color_index: None,
-            format: crate::gl::depth_map::FORMAT,
-            mode: Mode::Depth,
-            volumes: None,
-            difference: false,
-            stencil: false,
-            shadow: Some(*s),
-        })
-        .collect();
-    for t in &plan.targets {
-        // A multisampled target (MSAA) cannot be sampled as a sampler2D: its
-        // resolved image is the world's target, shown with it.
-        if t.samples > 1 {
-            continue;
-        }
-        for (i, &(name, format)) in t.colors.iter().enumerate() {
-            let color = |mode| View {
-                target: t.name,
-                attachment: name,
-                color_index: Some(i),
-                format,
-                mode,
-                volumes: None,
-                difference: false,
-                stencil: false,
-                shadow: None,
-            };
-            match name {
-                "normal_shininess" => {
-                    v.push(color(Mode::Normal));
-                    v.push(View {
-                        attachment: "shininess",
-                        ..color(Mode::Shininess)
-                    });
-                }
-                _ if matches!(format, glow::RGBA16F | glow::RGBA32F) => v.push(color(Mode::Light)),
-                _ => v.push(color(Mode::Color {
-                    encode: format == glow::SRGB8_ALPHA8,
-                })),
-            }
-        }
-        if let Depth::Own(format) = t.depth {
-            v.push(View {
-                target: t.name,
-                attachment: "depth",
-                color_index: None,
-                format,
-                mode: Mode::Depth,
-                volumes: None,
-                difference: false,
-                stencil: false,
-                shadow: None,
-            });
-            // The output's stencil: where mirrors mark their regions.
-            if format == glow::DEPTH24_STENCIL8 && t.name == crate::frame::targets::OUTPUT {
-                v.push(View {
-                    target: t.name,
-                    attachment: "stencil",
-                    color_index: None,
-                    format,
-                    mode: Mode::Color { encode: false },
-                    volumes: None,
-                    difference: false,
-                    stencil: true,
-                    shadow: None,
-                });
-            }
-        }
-    }
-    if has_volumes {
-        for which in [
-            VolumeView::Wireframe,
-            VolumeView::Debug,
-            VolumeView::Overdraw,
-        ] {
-            v.push(View {
-                target: "light volumes",
-                attachment: which.label(),
-                color_index: None,
-                format: 0,
-                mode: Mode::Color { encode: false },
-                volumes: Some(which),
-                difference: false,
-                stencil: false,
-                shadow: None,
-            });
-        }
-    }
-    v
-}
-
 pub struct Inspector {
+    gl: Gl,
     program: Program,
     fullscreen: Mesh,
+    /// For a mip level above 0: GL_NEAREST_MIPMAP_NEAREST, clamped (a
+    /// render target's own filter, GL_NEAREST, reads only level 0). Bound
+    /// on the unit while it draws, so the texture's settings stay as they are.
+    levels: glow::Sampler,
 }
 
 impl Inspector {
     pub fn new(gl: &Gl, sources: &Sources) -> Result<Inspector> {
+        let levels = unsafe {
+            let s = gl
+                .create_sampler()
+                .map_err(|e| anyhow!("glGenSamplers: {e}"))?;
+            for (p, v) in [
+                (glow::TEXTURE_MIN_FILTER, glow::NEAREST_MIPMAP_NEAREST),
+                (glow::TEXTURE_MAG_FILTER, glow::NEAREST),
+                (glow::TEXTURE_WRAP_S, glow::CLAMP_TO_EDGE),
+                (glow::TEXTURE_WRAP_T, glow::CLAMP_TO_EDGE),
+            ] {
+                gl.sampler_parameter_i32(s, p, v as i32);
+            }
+            s
+        };
         Ok(Inspector {
+            gl: gl.clone(),
+            levels,
             program: Program::new(
                 gl,
                 sources,
@@ -249,7 +77,12 @@ impl Inspector {
             Some(i) => fb.colors.get(i).map(|t| t.id),
             None => fb.depth_stencil.as_ref().map(|t| t.id),
         };
-        self.draw_texture(gl, texture, view.mode, camera, exposure, into);
+        let shown = Shown {
+            mode: view.mode,
+            level: view.level,
+            exposure,
+        };
+        self.draw_level(gl, texture, shown, camera, into);
     }
 
     /// Draw `texture` made visible by `mode` into `into`, full size.
@@ -262,6 +95,31 @@ impl Inspector {
         exposure: f32,
         into: &Framebuffer,
     ) {
+        let shown = Shown {
+            mode,
+            level: 0,
+            exposure,
+        };
+        self.draw_level(gl, texture, shown, camera, into);
+    }
+
+    /// Draw mip level `shown.level` of `texture` made visible by
+    /// `shown.mode` into `into`, stretched to its full size (textureLod in
+    /// glsl/demo/inspect.frag). Above level 0 the texture must be mipmap
+    /// complete up to its GL_TEXTURE_MAX_LEVEL, as glGenerateMipmap leaves it.
+    pub fn draw_level(
+        &self,
+        gl: &glow::Context,
+        texture: Option<glow::Texture>,
+        shown: Shown,
+        camera: &Camera,
+        into: &Framebuffer,
+    ) {
+        let Shown {
+            mode,
+            level,
+            exposure,
+        } = shown;
         let p = &self.program;
         let (index, encode, scale) = match mode {
             Mode::Color { encode } => (0, encode, 1.0),
@@ -278,7 +136,11 @@ impl Inspector {
             p.use_program();
             gl.active_texture(glow::TEXTURE0);
             gl.bind_texture(glow::TEXTURE_2D, texture);
+            if level > 0 {
+                gl.bind_sampler(0, Some(self.levels));
+            }
             p.set_i32("u_texture", 0);
+            p.set_f32("u_level", level as f32);
             p.set_i32("u_mode", index);
             p.set_bool("u_encode", encode);
             p.set_f32("u_exposure", exposure);
@@ -295,6 +157,7 @@ impl Inspector {
             );
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             self.fullscreen.draw();
+            gl.bind_sampler(0, None);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.use_program(None);
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
@@ -302,19 +165,18 @@ impl Inspector {
     }
 }
 
-/// The inspected view, kept by what it shows rather than by its place in the
-/// list: adding or removing a caster shifts every view after it. `index` is
-/// the panel's choice and `kept` the view it showed last frame (None just
-/// after a new choice). Returns the index to show, None when the view has
-/// gone, and makes `kept` that view.
-pub fn follow(index: Option<usize>, kept: &mut Option<View>, views: &[View]) -> Option<usize> {
-    let found = match (index, kept.as_ref()) {
-        (None, _) => None,
-        (Some(i), Some(k)) if !views.get(i).is_some_and(|v| v.same_as(k)) => {
-            views.iter().position(|v| v.same_as(k))
-        }
-        (Some(i), _) => (i < views.len()).then_some(i),
-    };
-    *kept = found.map(|i| views[i].clone());
-    found
+/// How `Inspector::draw_level` shows a texture.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shown {
+    pub mode: Mode,
+    /// The mip level.
+    pub level: u32,
+    /// Multiplies HDR light (`Mode::Light`).
+    pub exposure: f32,
+}
+
+impl Drop for Inspector {
+    fn drop(&mut self) {
+        unsafe { self.gl.delete_sampler(self.levels) };
+    }
 }

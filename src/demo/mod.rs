@@ -6,20 +6,24 @@
 //!
 //! The files: `panel/` (the egui panel: scene, techniques and their
 //! settings, inspector, timings, plan, keys), `actions` (carrying out what
-//! the panel and the keys ask), `inspector` (the view pass; its shadow-map
+//! the panel and the keys ask), `inspector` (the view pass, over the views
+//! of `inspect_views`; its shadow-map
 //! and light-volume views in `shadow_views` and `volume_views`), `keys`,
 //! `screenshot`, `orbit` (the camera), `shaders` (live reload of glsl/),
-//! `present` (the blit to the window and the state restore after egui).
+//! `present` (the blit to the window and the state restore after egui),
+//! `post_chain` (the panel's chain edits checked, the chain's images named).
 
 mod actions;
 mod clock;
 pub mod compare;
 mod frame;
+mod inspect_views;
 pub mod inspector;
 mod keys;
 mod orbit;
 pub mod panel;
 mod panel_layer;
+pub mod post_chain;
 mod present;
 
 pub use present::restore_after_egui;

@@ -6,7 +6,9 @@
 mod common;
 
 mod compare;
+mod driver;
 mod panel;
+mod post_chain;
 mod robustness;
 mod save;
 mod settings;

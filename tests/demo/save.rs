@@ -8,7 +8,7 @@ use gloss::scene::knobs::{self, Value};
 use gloss::scene::{Accumulation, Scene};
 
 /// A saved scene reloads to the same image: no channel off by more than one step.
-const EXACT: gloss::image_compare::Tolerance = gloss::image_compare::Tolerance {
+pub const EXACT: gloss::image_compare::Tolerance = gloss::image_compare::Tolerance {
     threshold: 1.0 / 255.0,
     max_frac_over: 0.0,
     max_abs: Some(1.0 / 255.0),

@@ -6,98 +6,11 @@
 //! own limit.
 
 use crate::common;
-use egui::accesskit::{self, NodeId};
-use gloss::demo::panel::{Action, PanelInput, PanelState, too_many_casters};
+use crate::driver::{Driver, input};
+use gloss::demo::panel::{Action, too_many_casters};
 use gloss::gl::program::Sources;
 use gloss::renderer::Renderer;
 use gloss::scene::{Light, Scene, Shadow};
-
-/// The panel in an egui context of its own, tall enough that nothing scrolls.
-struct Driver {
-    ctx: egui::Context,
-    panel: PanelState,
-}
-
-impl Driver {
-    fn new() -> Driver {
-        let ctx = egui::Context::default();
-        ctx.enable_accesskit();
-        Driver {
-            ctx,
-            panel: PanelState::new("test.toml"),
-        }
-    }
-
-    /// One frame of the panel: the actions asked for and the widgets shown.
-    fn frame(
-        &mut self,
-        input: &PanelInput,
-        events: Vec<egui::Event>,
-    ) -> (Vec<Action>, Vec<(NodeId, accesskit::Node)>) {
-        let raw = egui::RawInput {
-            screen_rect: Some(egui::Rect::from_min_size(
-                egui::Pos2::ZERO,
-                egui::vec2(480.0, 6000.0),
-            )),
-            events,
-            ..Default::default()
-        };
-        let mut actions = Vec::new();
-        let panel = &mut self.panel;
-        let out = self.ctx.run_ui(raw, |ui| actions = panel.show(ui, input));
-        let nodes = (out.platform_output.accesskit_update)
-            .map(|u| u.nodes)
-            .unwrap_or_default();
-        (actions, nodes)
-    }
-
-    /// The widget named `name` (its label, or a label's text).
-    fn find(&mut self, input: &PanelInput, name: &str) -> Option<accesskit::Node> {
-        let (_, nodes) = self.frame(input, Vec::new());
-        nodes.into_iter().map(|(_, n)| n).find(|n| named(n, name))
-    }
-
-    /// Click the widget named `name`; the actions of that frame.
-    fn click(&mut self, input: &PanelInput, name: &str) -> Vec<Action> {
-        let (_, nodes) = self.frame(input, Vec::new());
-        let Some((id, _)) = nodes.iter().find(|(_, n)| named(n, name)) else {
-            let names: Vec<_> = nodes
-                .iter()
-                .filter_map(|(_, n)| n.label().or(n.value()))
-                .collect();
-            panic!("no widget named {name:?} among {names:?}");
-        };
-        let click = egui::Event::AccessKitActionRequest(accesskit::ActionRequest {
-            action: accesskit::Action::Click,
-            target_tree: accesskit::TreeId::ROOT,
-            target_node: *id,
-            data: None,
-        });
-        self.frame(input, vec![click]).0
-    }
-}
-
-fn named(n: &accesskit::Node, name: &str) -> bool {
-    n.label() == Some(name) || n.value() == Some(name)
-}
-
-fn input<'a>(scene: &'a Scene, r: &'a Renderer) -> PanelInput<'a> {
-    PanelInput {
-        scene,
-        scene_path: "test.toml",
-        shipped: &[],
-        plan: &r.plan,
-        times: &r.last_times,
-        views: &[],
-        error: None,
-        status: None,
-        comparison: None,
-        thumbnails: &[],
-        gl_info: "headless test",
-        size: (r.width, r.height),
-        stretch: None,
-    }
-}
 
 /// The edited lights of the one `Action::Lights` among `actions`.
 fn lights(actions: Vec<Action>) -> Vec<Light> {

@@ -9,6 +9,7 @@
 //! appears here through its one registration.
 
 mod knob;
+mod post_chain;
 mod shadow_knobs;
 mod structure;
 mod timings;
@@ -53,6 +54,8 @@ pub enum Action {
     Camera(Camera),
     /// Edited object transforms (all objects, in the scene's order).
     Objects(Vec<crate::scene::Object>),
+    /// The edited post chain (all entries, in order): checked, then run.
+    Post(Vec<crate::scene::post::PostPass>),
     /// Show a view full-window (None: the final image).
     Inspect(Option<usize>),
     /// A screenshot; `true`: with the panel.
@@ -142,6 +145,7 @@ impl PanelState {
                     }
                     self.scene_section(ui, input, &mut actions);
                     technique_section(ui, input, &mut actions);
+                    post_chain::section(ui, input, &mut actions);
                     self.inspector_section(ui, input, &mut actions);
                     self.timings.show(ui, input.times, &mut self.pass_times);
                     egui::CollapsingHeader::new("Frame plan")

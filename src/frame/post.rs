@@ -22,6 +22,7 @@
 
 use crate::frame::Frame;
 use crate::frame::multisample;
+use crate::frame::plan::Pass;
 use crate::frame::targets::{Depth, OUTPUT, TargetDesc, Targets};
 use crate::frame::uniforms::unit;
 use crate::gl::program::Program;
@@ -214,6 +215,26 @@ pub fn describe(scene: &Scene, s: usize) -> String {
         image_name(&t, reads(scene, s)),
         image_name(&t, writes(scene, s))
     )
+}
+
+/// The plan's pass for step `s` of entry `i`: pass `name` of the technique
+/// in file `code`, drawing into what step `s` writes, described as `what`
+/// (nothing when empty) and what it reads and writes.
+pub fn step_pass(
+    scene: &Scene,
+    name: &'static str,
+    what: &str,
+    i: usize,
+    s: usize,
+    code: &'static str,
+) -> Pass {
+    let io = describe(scene, s);
+    let draws = if what.is_empty() {
+        io
+    } else {
+        format!("{what}: {io}")
+    };
+    Pass::new(name, writes(scene, s).target, draws, code).about(i, s as u32)
 }
 
 /// One step of the chain as notes 01 §9 gives it: "a processing stage

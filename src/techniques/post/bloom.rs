@@ -31,7 +31,7 @@
 use super::bloom_levels::{self, BLOOM_FULL, BLOOM_FULL_TEMP, BLOOM_LEVELS, BLOOM_TEMP, Blur};
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::post::{self, describe, entries};
+use crate::frame::post::{self, entries, step_pass};
 use crate::frame::targets::{Depth, TargetDesc};
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
@@ -141,14 +141,15 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         };
         let weights = b.weights.map(|x| x.to_string()).join(" + ");
         v.push(
-            Pass::new(
+            step_pass(
+                scene,
                 "bloom merge",
-                post::writes(scene, step).target,
-                format!("weights {weights}{clamp}: {}", describe(scene, step)),
+                &format!("weights {weights}{clamp}"),
+                i,
+                step,
                 file!(),
             )
-            .step(MERGE_STEP)
-            .about(i, step as u32),
+            .step(MERGE_STEP),
         );
     }
     v

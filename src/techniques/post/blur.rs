@@ -17,7 +17,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::post::{self, describe, entries};
+use crate::frame::post::{self, entries, step_pass};
 use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
@@ -87,10 +87,8 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         };
         for (step, direction) in [(0, "horizontal"), (1, "vertical")] {
             let s = first + step;
-            let draws = format!("{name}, {direction}: {}", describe(scene, s));
-            let target = post::writes(scene, s).target;
-            let pass = Pass::new("blur", target, draws, file!()).about(i, s as u32);
-            v.push(pass.step(step as u32));
+            let what = format!("{name}, {direction}");
+            v.push(step_pass(scene, "blur", &what, i, s, file!()).step(step as u32));
         }
     }
     v

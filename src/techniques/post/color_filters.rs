@@ -8,7 +8,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::post::{self, describe, entries};
+use crate::frame::post::{self, entries, step_pass};
 use crate::frame::targets::TargetDesc;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
@@ -44,9 +44,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     (entries(scene))
         .filter_map(|(i, step, p)| {
             let (name, _) = mode(p)?;
-            let draws = describe(scene, step);
-            let target = post::writes(scene, step).target;
-            Some(Pass::new(name, target, draws, file!()).about(i, step as u32))
+            Some(step_pass(scene, name, "", i, step, file!()))
         })
         .collect()
 }

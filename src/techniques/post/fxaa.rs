@@ -34,7 +34,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::post::{self, describe, entries};
+use crate::frame::post::{self, entries, step_pass};
 use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
@@ -64,17 +64,15 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     (entries(scene))
         .filter_map(|(i, step, p)| match p {
             PostPass::Fxaa(x) => {
-                let draws = format!(
-                    "FXAA 3.11 quality {} ({} search steps), subpix {}, edge {} (min {}): {}",
+                let what = format!(
+                    "FXAA 3.11 quality {} ({} search steps), subpix {}, edge {} (min {})",
                     x.quality,
                     x.steps().len(),
                     x.subpix,
                     x.edge_threshold,
                     x.edge_threshold_min,
-                    describe(scene, step)
                 );
-                let target = post::writes(scene, step).target;
-                Some(Pass::new("fxaa", target, draws, file!()).about(i, step as u32))
+                Some(step_pass(scene, "fxaa", &what, i, step, file!()))
             }
             _ => None,
         })

@@ -14,7 +14,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::post::{self, describe, entries};
+use crate::frame::post::{self, entries, step_pass};
 use crate::frame::targets::TargetDesc;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
@@ -47,9 +47,14 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                 } else {
                     format!("gamma {gamma}")
                 };
-                let draws = format!("{curve}: {}", describe(scene, step));
-                let target = post::writes(scene, step).target;
-                Some(Pass::new("gamma correction", target, draws, file!()).about(i, step as u32))
+                Some(step_pass(
+                    scene,
+                    "gamma correction",
+                    &curve,
+                    i,
+                    step,
+                    file!(),
+                ))
             }
             _ => None,
         })

@@ -9,7 +9,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::post::{self, describe, entries};
+use crate::frame::post::{self, entries, step_pass};
 use crate::frame::targets::TargetDesc;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
@@ -37,9 +37,8 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         .filter_map(|(i, step, p)| match p {
             PostPass::Kernel(k) => {
                 let name = k.preset.unwrap_or("custom");
-                let draws = format!("3x3 {name}: {}", describe(scene, step));
-                let target = post::writes(scene, step).target;
-                Some(Pass::new("kernel", target, draws, file!()).about(i, step as u32))
+                let what = format!("3x3 {name}");
+                Some(step_pass(scene, "kernel", &what, i, step, file!()))
             }
             _ => None,
         })

@@ -8,7 +8,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::post::{self, describe, entries};
+use crate::frame::post::{self, entries, step_pass};
 use crate::frame::targets::TargetDesc;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
@@ -35,13 +35,8 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     (entries(scene))
         .filter_map(|(i, step, p)| match p {
             PostPass::Tonemap { operator, exposure } => {
-                let draws = format!(
-                    "{}, exposure {exposure}: {}",
-                    operator.name(),
-                    describe(scene, step)
-                );
-                let target = post::writes(scene, step).target;
-                Some(Pass::new("tone mapping", target, draws, file!()).about(i, step as u32))
+                let what = format!("{}, exposure {exposure}", operator.name());
+                Some(step_pass(scene, "tone mapping", &what, i, step, file!()))
             }
             _ => None,
         })

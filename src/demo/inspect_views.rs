@@ -150,10 +150,20 @@ pub fn views(plan: &FramePlan, has_volumes: bool, shadows: &[ShadowView]) -> Vec
     let mut v: Vec<View> = shadows.iter().map(map).collect();
     for t in &plan.targets {
         // A multisampled target (MSAA) cannot be sampled as a sampler2D: its
-        // resolved image is the world's target, shown with it. Bloom's mip
-        // targets are not framebuffers of the plan's (their levels are
-        // listed separately once the inspector reads `Targets::mip`).
-        if t.samples > 1 || t.mips.is_some() {
+        // resolved image is the world's target, shown with it.
+        if t.samples > 1 {
+            continue;
+        }
+        // A target with mip levels (bloom's): one view per level it has.
+        if let Some((first, last)) = t.mips {
+            for (i, &(name, format)) in t.colors.iter().enumerate() {
+                for level in first..=last {
+                    v.push(View {
+                        level,
+                        ..View::of(t.name, name, Some(i), format, Mode::Light)
+                    });
+                }
+            }
             continue;
         }
         for (i, &(name, format)) in t.colors.iter().enumerate() {

@@ -70,16 +70,26 @@ impl Inspector {
         exposure: f32,
         into: &Framebuffer,
     ) {
-        let Some(fb) = targets.find(view.target) else {
-            return;
-        };
-        let texture = match view.color_index {
-            Some(i) => fb.colors.get(i).map(|t| t.id),
-            None => fb.depth_stencil.as_ref().map(|t| t.id),
+        // A target with mip levels (src/gl/mip_target.rs) has one texture
+        // whose GL_TEXTURE_BASE_LEVEL is its first level; textureLod counts
+        // from the base level.
+        let (texture, lod, mipmapped) = if let Some(m) = targets.mip(view.target) {
+            let first = m.levels.first().map_or(0, |l| l.level);
+            (Some(m.texture.id), view.level.saturating_sub(first), true)
+        } else {
+            let Some(fb) = targets.find(view.target) else {
+                return;
+            };
+            let texture = match view.color_index {
+                Some(i) => fb.colors.get(i).map(|t| t.id),
+                None => fb.depth_stencil.as_ref().map(|t| t.id),
+            };
+            (texture, view.level, view.level > 0)
         };
         let shown = Shown {
             mode: view.mode,
-            level: view.level,
+            level: lod,
+            mipmapped,
             exposure,
         };
         self.draw_level(gl, texture, shown, camera, into);
@@ -98,6 +108,7 @@ impl Inspector {
         let shown = Shown {
             mode,
             level: 0,
+            mipmapped: false,
             exposure,
         };
         self.draw_level(gl, texture, shown, camera, into);
@@ -105,8 +116,9 @@ impl Inspector {
 
     /// Draw mip level `shown.level` of `texture` made visible by
     /// `shown.mode` into `into`, stretched to its full size (textureLod in
-    /// glsl/demo/inspect.frag). Above level 0 the texture must be mipmap
-    /// complete up to its GL_TEXTURE_MAX_LEVEL, as glGenerateMipmap leaves it.
+    /// glsl/demo/inspect.frag), texel by texel. Above level 0 (or when
+    /// `shown.mipmapped`) the texture must be mipmap complete up to its
+    /// GL_TEXTURE_MAX_LEVEL, as glGenerateMipmap or a mip target leaves it.
     pub fn draw_level(
         &self,
         gl: &glow::Context,
@@ -118,6 +130,7 @@ impl Inspector {
         let Shown {
             mode,
             level,
+            mipmapped,
             exposure,
         } = shown;
         let p = &self.program;
@@ -136,7 +149,7 @@ impl Inspector {
             p.use_program();
             gl.active_texture(glow::TEXTURE0);
             gl.bind_texture(glow::TEXTURE_2D, texture);
-            if level > 0 {
+            if level > 0 || mipmapped {
                 gl.bind_sampler(0, Some(self.levels));
             }
             p.set_i32("u_texture", 0);
@@ -169,8 +182,12 @@ impl Inspector {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Shown {
     pub mode: Mode,
-    /// The mip level.
+    /// The mip level, counted from the texture's base level.
     pub level: u32,
+    /// The texture has levels: read through the nearest-level sampler even
+    /// at its base level (a mip target filters linearly for its blurs'
+    /// taps). Always so above level 0.
+    pub mipmapped: bool,
     /// Multiplies HDR light (`Mode::Light`).
     pub exposure: f32,
 }

@@ -16,6 +16,7 @@ use crate::frame::post::{self, HDR, Image};
 use crate::scene::Scene;
 use crate::scene::post::{PASS_NAMES, PostPass, chain};
 use crate::techniques;
+use crate::techniques::post::bloom_levels;
 use anyhow::{Result, anyhow};
 
 /// How a refused chain's message begins (the panel shows it in its "Post
@@ -90,6 +91,32 @@ pub fn name_steps(views: &mut [View], scene: &Scene, plan: &FramePlan) {
                 s + 1,
                 step_name(scene, plan, s)
             ));
+        }
+    }
+    name_bloom(views, scene);
+}
+
+/// Bloom's images, by the blur that left them: a level of `bloom_levels`
+/// "blur 2 of 4, sigma 24.9 full-resolution pixels", the same level of
+/// `bloom_temp` "blur 2's horizontal pass" (src/techniques/post/bloom_levels.rs).
+fn name_bloom(views: &mut [View], scene: &Scene) {
+    let (w, h) = (scene.render.size.0 as i32, scene.render.size.1 as i32);
+    for b in scene.post.iter().filter_map(|p| match p {
+        PostPass::Bloom(b) => Some(b),
+        _ => None,
+    }) {
+        let blurs = bloom_levels::blurs(b, w, h);
+        for v in views.iter_mut() {
+            let on = |t: &str, x: &bloom_levels::Blur| t == v.target && x.level == v.level;
+            if let Some(x) = blurs.iter().rev().find(|x| on(x.target, x)) {
+                let sigma = b.levels[x.index].sigma;
+                v.written = Some(format!(
+                    "blur {} of 4, sigma {sigma} full-resolution pixels",
+                    x.index + 1
+                ));
+            } else if let Some(x) = blurs.iter().rev().find(|x| on(x.temp, x)) {
+                v.written = Some(format!("blur {}'s horizontal pass", x.index + 1));
+            }
         }
     }
 }

@@ -3,8 +3,8 @@
 //! add a blur, change its sigma, move it and remove it, and the frame plan
 //! follows; removing or moving gamma is refused with the scene loader's
 //! message and the old chain keeps running; the inspector shows each of the
-//! chain's textures as it holds them at the end of the frame, and one mip
-//! level of a texture; an edited chain saved and loaded again renders the
+//! chain's textures as it holds them at the end of the frame, one mip
+//! level of a texture, and each of bloom's levels; an edited chain saved and loaded again renders the
 //! same image.
 
 use crate::common;
@@ -372,6 +372,7 @@ fn the_inspector_shows_one_mip_level_of_a_texture() {
         let shown_as = Shown {
             mode: Mode::Color { encode: false },
             level,
+            mipmapped: level > 0,
             exposure: 1.0,
         };
         inspector.draw_level(gl, Some(texture), shown_as, &camera, &fb);
@@ -414,6 +415,80 @@ fn the_inspector_shows_one_mip_level_of_a_texture() {
         view.label(),
         "bloom.color level 2 (RGBA16F): light x exposure"
     );
+}
+
+#[test]
+fn the_inspector_shows_each_of_blooms_mip_levels() {
+    let ctx = common::context(common::backend());
+    let gl = &ctx.gl;
+    let inspector = Inspector::new(gl, &Sources::Embedded).unwrap();
+    // 54 rows: levels of 27, 13, 6 and 3 rows, not halves of each other.
+    let (w, h) = (96, 54);
+    let mut scene = common::scene("bloom.toml");
+    scene.render.size = (w as u32, h as u32);
+    let mut r = Renderer::new(gl, &ctx.debug, &scene, &Sources::Embedded, w, h).unwrap();
+    render(&ctx, &scene, &mut r);
+    let mut all = views(&r.plan, false, &[]);
+    name_steps(&mut all, &scene, &r.plan);
+    let labels: Vec<String> = all.iter().map(View::label).collect();
+    let sigmas = [6.2, 24.9, 81.0, 263.0];
+    for (k, sigma) in sigmas.iter().enumerate() {
+        let want = format!(
+            "bloom_levels.color level {}: blur {} of 4, sigma {sigma} full-resolution pixels \
+             (RGBA16F): light x exposure",
+            k + 1,
+            k + 1
+        );
+        assert!(labels.contains(&want), "{want}\namong {labels:#?}");
+        let temp = format!(
+            "bloom_temp.color level {}: blur {}'s horizontal pass (RGBA16F): light x exposure",
+            k + 1,
+            k + 1
+        );
+        assert!(labels.contains(&temp), "{temp}\namong {labels:#?}");
+    }
+    let fb = Framebuffer::new(gl, "inspected", w, h, &[glow::RGBA8], None).unwrap();
+    let exposure = 4.0;
+    let levels: Vec<&View> = all.iter().filter(|v| v.target == "bloom_levels").collect();
+    assert_eq!(levels.len(), 4, "{labels:#?}");
+    let mut pictures = Vec::new();
+    for v in levels {
+        inspector.draw(gl, v, r.targets(), &scene.camera, exposure, &fb);
+        ctx.debug
+            .check(gl, "a bloom level in the inspector")
+            .unwrap();
+        let texture = r.targets().mip("bloom_levels").unwrap().texture.id;
+        let (lw, lh) = gloss::gl::texture::level_size(w, h, v.level);
+        let texels = read_texture(gl, texture, v.level as i32, lw, lh);
+        let got = shown(&fb);
+        // Pixel (x, y) shows the texel under its centre: the level
+        // stretched over the view.
+        for y in 0..h {
+            for x in 0..w {
+                let tx = ((2 * x + 1) * lw / (2 * w)) as usize;
+                let ty = ((2 * y + 1) * lh / (2 * h)) as usize;
+                for c in 0..3 {
+                    let t = texels[(ty * lw as usize + tx) * 4 + c];
+                    let want = srgb_encode((t * exposure).clamp(0.0, 1.0)) * 255.0;
+                    let g = got[((y * w + x) * 4) as usize + c];
+                    assert!(
+                        (f32::from(g) - want).abs() <= 1.0,
+                        "{}: pixel ({x}, {y}) channel {c}: shown {g}, texel {t}",
+                        v.label()
+                    );
+                }
+            }
+        }
+        pictures.push(got);
+    }
+    for i in 1..4 {
+        assert_ne!(
+            pictures[i - 1],
+            pictures[i],
+            "level {i} and {} differ",
+            i + 1
+        );
+    }
 }
 
 #[test]

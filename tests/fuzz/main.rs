@@ -188,4 +188,5 @@ fn a_broken_property_fails_the_run_and_keeps_its_input() {
         .and_then(|s| s.split(' ').next())
         .unwrap();
     assert_eq!(std::fs::read(file).unwrap(), vec![7]);
+    let _ = std::fs::remove_file(file);
 }

@@ -188,16 +188,16 @@ fn any_op() -> impl Strategy<Value = Op> {
     )
         .prop_map(|(k, v)| format!("{} = {v}", k.rsplit('.').next().unwrap_or(&k)));
     prop_oneof![
-        1 => (n.clone(), any::<u8>()).prop_map(|(i, b)| Op::Byte(i, b)),
-        1 => (n.clone(), "[ -~\n]{1,8}").prop_map(|(i, s)| Op::Insert(i, s)),
-        1 => (n.clone(), 1..64usize).prop_map(|(i, l)| Op::Cut(i, l)),
-        1 => n.clone().prop_map(Op::DropLine),
-        1 => n.clone().prop_map(Op::DupLine),
-        1 => (n.clone(), n.clone()).prop_map(|(a, b)| Op::SwapLines(a, b)),
-        4 => n.clone().prop_map(Op::DropKey),
-        6 => (n.clone(), proptest::sample::select(EXTREME_NUMBERS)).prop_map(|(i, s)| Op::Number(i, s.to_string())),
-        6 => (n.clone(), any_value()).prop_map(|(i, v)| Op::Value(i, v)),
-        3 => (n.clone(), key_line).prop_map(|(i, l)| Op::AddLine(i, l)),
+        1 => (n, any::<u8>()).prop_map(|(i, b)| Op::Byte(i, b)),
+        1 => (n, "[ -~\n]{1,8}").prop_map(|(i, s)| Op::Insert(i, s)),
+        1 => (n, 1..64usize).prop_map(|(i, l)| Op::Cut(i, l)),
+        1 => n.prop_map(Op::DropLine),
+        1 => n.prop_map(Op::DupLine),
+        1 => (n, n).prop_map(|(a, b)| Op::SwapLines(a, b)),
+        4 => n.prop_map(Op::DropKey),
+        6 => (n, proptest::sample::select(EXTREME_NUMBERS)).prop_map(|(i, s)| Op::Number(i, s.to_string())),
+        6 => (n, any_value()).prop_map(|(i, v)| Op::Value(i, v)),
+        3 => (n, key_line).prop_map(|(i, l)| Op::AddLine(i, l)),
         1 => (n, proptest::sample::select(vocabulary().1.clone())).prop_map(|(i, s)| Op::AddLine(i, s)),
     ]
 }

@@ -93,9 +93,7 @@ fn file_kind(t: std::fs::FileType) -> Option<&'static str> {
             return Some("is a FIFO (named pipe), not a regular file");
         }
         if t.is_char_device() {
-            return Some(
-                "is a character device (such as /dev/zero or a terminal), not a regular file",
-            );
+            return Some("is a character device, not a regular file");
         }
         if t.is_block_device() {
             return Some("is a block device, not a regular file");

@@ -27,7 +27,7 @@ use crate::gl::{Gl, Headless};
 use crate::lighting;
 use crate::scene::{Camera, RenderSettings, Scene};
 use crate::techniques;
-use anyhow::{Result, bail};
+use anyhow::Result;
 use glow::HasContext;
 
 pub struct Renderer {
@@ -160,13 +160,11 @@ impl Renderer {
     /// uploaded. On an error the renderer
     /// keeps what it had.
     pub fn set_scene_values(&mut self, scene: &Scene) -> Result<()> {
-        if scene.lights.len() > self.max_lights {
-            bail!(
-                "{} lights, but this GL's uniform blocks hold at most {}",
-                scene.lights.len(),
-                self.max_lights
-            );
-        }
+        check_light_count(
+            scene,
+            self.max_lights,
+            "this GL's GL_MAX_UNIFORM_BLOCK_SIZE",
+        )?;
         let old = std::mem::replace(&mut self.scene, scene.clone());
         let lights = FrameLights::new(&self.scene);
         let plan = FramePlan::new(&self.scene, &lights, techniques::ALL);

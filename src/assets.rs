@@ -40,7 +40,76 @@ fn normalise(p: &str) -> String {
 
 /// Does `path` name a file, on disk or embedded?
 pub fn is_file(path: &Path) -> bool {
-    embedded(path).is_some() || path.is_file()
+    not_a_file(path).is_none()
+}
+
+/// What is wrong with `path` as a file to read (a mesh, a texture, a
+/// sprite a scene names): `None` for a regular file, on disk (through any
+/// symbolic links) or embedded; otherwise what is there instead, in words
+/// that follow the path: "does not exist", "is a directory", "is a FIFO
+/// (named pipe), not a regular file", "is a symbolic link to /dev/zero,
+/// which is a character device ...". Only metadata is read, nothing is
+/// opened, so a FIFO never blocks and a device is never read.
+pub fn not_a_file(path: &Path) -> Option<String> {
+    if embedded(path).is_some() {
+        return None;
+    }
+    if path.to_str().is_some_and(|s| s.starts_with(EMBEDDED)) {
+        return Some("does not exist (gloss embeds no such file)".into());
+    }
+    let own = match std::fs::symlink_metadata(path) {
+        Ok(m) => m,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            return Some("does not exist".into());
+        }
+        Err(e) => return Some(format!("cannot be read: {e}")),
+    };
+    if !own.file_type().is_symlink() {
+        return file_kind(own.file_type()).map(str::to_string);
+    }
+    let to = std::fs::read_link(path)
+        .map(|t| t.display().to_string())
+        .unwrap_or_else(|_| "?".into());
+    let which = match std::fs::metadata(path) {
+        Ok(m) => file_kind(m.file_type())?.to_string(),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => "does not exist".into(),
+        Err(e) => format!("cannot be read: {e}"),
+    };
+    Some(format!("is a symbolic link to {to}, which {which}"))
+}
+
+/// `None` for a regular file, else what the file type is, in words.
+fn file_kind(t: std::fs::FileType) -> Option<&'static str> {
+    if t.is_file() {
+        return None;
+    }
+    if t.is_dir() {
+        return Some("is a directory");
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt as _;
+        if t.is_fifo() {
+            return Some("is a FIFO (named pipe), not a regular file");
+        }
+        if t.is_char_device() {
+            return Some("is a character device, not a regular file");
+        }
+        if t.is_block_device() {
+            return Some("is a block device, not a regular file");
+        }
+        if t.is_socket() {
+            return Some("is a socket, not a regular file");
+        }
+    }
+    Some("is not a regular file")
+}
+
+/// Does the file name `name` end in `.ext`, in any case (`rock.OBJ`)?
+pub fn has_extension(name: &str, ext: &str) -> bool {
+    Path::new(name)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case(ext))
 }
 
 /// Every shipped scene, as `scenes/NAME.toml`, sorted.
@@ -77,7 +146,7 @@ pub fn assets_beside(scene: &Path, ext: &str) -> Vec<PathBuf> {
             .map(|rd| rd.filter_map(|e| Some(e.ok()?.path())).collect())
             .unwrap_or_default()
     };
-    v.retain(|p| p.extension().is_some_and(|e| e == ext));
+    v.retain(|p| p.extension().is_some_and(|e| e.eq_ignore_ascii_case(ext)));
     v.sort();
     v
 }
@@ -152,5 +221,37 @@ mod tests {
             &p.parent().unwrap().join("assets/../assets/bricks.png")
         ));
         assert!(!is_file(Path::new("embedded:scenes/none.toml")));
+    }
+
+    #[test]
+    fn what_is_not_a_file_is_named() {
+        let dir = std::env::temp_dir().join(format!("gloss-assets-kinds-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("a.png");
+        std::fs::write(&file, b"x").unwrap();
+        assert_eq!(not_a_file(&file), None);
+        let said = |p: &Path| not_a_file(p).expect("not a file");
+        assert_eq!(said(&dir.join("none.png")), "does not exist");
+        assert_eq!(said(&dir), "is a directory");
+        #[cfg(unix)]
+        {
+            let link = dir.join("zero.png");
+            std::os::unix::fs::symlink("/dev/zero", &link).unwrap();
+            let s = said(&link);
+            assert!(
+                s.starts_with("is a symbolic link to /dev/zero, which is a character device"),
+                "{s}"
+            );
+            let dangling = dir.join("dangling.png");
+            std::os::unix::fs::symlink(dir.join("gone"), &dangling).unwrap();
+            assert!(said(&dangling).ends_with("which does not exist"));
+            let good = dir.join("good.png");
+            std::os::unix::fs::symlink(&file, &good).unwrap();
+            assert_eq!(not_a_file(&good), None);
+        }
+        assert!(has_extension("rock.OBJ", "obj") && has_extension("a/b.Png", "png"));
+        assert!(!has_extension("obj", "obj") && !has_extension("a.objx", "obj"));
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -13,10 +13,12 @@
 //! | 5 | `frame` | the plan, draw list, lights, targets, uniforms, timing |
 //! | 6 | `techniques` | one file per technique, by chapter, and the registry |
 //! | 7 | `renderer` | runs the plan |
-//! | 8 | `bench`, `demo` | the tools; `src/main.rs` is the command line |
+//! | 8 | `bench`, `demo` | the tools |
+//! | 9 | `cli` | the command line as clap parses it; `src/main.rs` runs it |
 
 pub mod assets;
 pub mod bench;
+pub mod cli;
 pub mod demo;
 pub mod frame;
 pub mod geometry;

@@ -1,96 +1,14 @@
 //! The `gloss` command line.
 
 use anyhow::{Context as _, Result, anyhow, bail};
-use clap::{Parser, Subcommand};
+use clap::Parser as _;
 use gloss::assets;
+use gloss::cli::{Cli, Command, Inspect};
 use gloss::gl::{Backend, Headless};
 use gloss::renderer::{Output, render_scene};
-use gloss::scene::{RenderPath, Scene, Shading};
+use gloss::scene::{RenderPath, Scene};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-
-#[derive(Parser)]
-#[command(
-    name = "gloss",
-    version,
-    about = "OpenGL 3.3 core reference renderer for a real-time graphics course"
-)]
-struct Cli {
-    /// egl | osmesa | window (default: window when a display exists, else egl)
-    #[arg(long, global = true, value_enum)]
-    backend: Option<Backend>,
-    /// GL debug output on; any GL error is fatal.
-    #[arg(long, global = true)]
-    debug: bool,
-    /// Set a scene-file key, as if written in the file: render.cutoff=0.01,
-    /// render.path=volumes, render.ambient=[0.1,0.1,0.1]. Repeatable.
-    #[arg(long = "set", global = true, value_name = "KEY=VALUE")]
-    set: Vec<String>,
-    /// Demo: start with the panel hidden (Tab shows it).
-    #[arg(long)]
-    no_panel: bool,
-    /// Demo: do not time each pass (glFinish after every pass) while the panel is shown.
-    #[arg(long)]
-    no_pass_times: bool,
-    /// Demo: exit after this many frames (smoke tests).
-    #[arg(long)]
-    frames: Option<u32>,
-    /// Demo / default render: the scene (default scenes/default.toml).
-    scene: Option<PathBuf>,
-    #[command(subcommand)]
-    command: Option<Command>,
-}
-
-/// A buffer `gloss render --inspect` writes instead of the image.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-enum Inspect {
-    /// The output's stencil buffer at the end of the frame.
-    Stencil,
-}
-
-#[derive(Subcommand)]
-enum Command {
-    /// Render a scene headless to a PNG.
-    Render {
-        scene: PathBuf,
-        #[arg(short, long)]
-        output: PathBuf,
-        /// WIDTHxHEIGHT (default: the scene's render.size)
-        #[arg(long, value_parser = gloss::bench::parse_size)]
-        size: Option<(u32, u32)>,
-        /// Override the scene's render path.
-        #[arg(long, value_enum)]
-        path: Option<RenderPath>,
-        /// Override the scene's shading mode.
-        #[arg(long, value_enum)]
-        shading: Option<Shading>,
-        /// Number of generated lights (scenes with a [light_grid]).
-        #[arg(long)]
-        lights: Option<usize>,
-        /// Write a buffer other than the image: `stencil` (each stencil
-        /// value its own colour, 0 black).
-        #[arg(long, value_enum)]
-        inspect: Option<Inspect>,
-        /// With --inspect: the buffer as it is after this pass (1-based, as
-        /// `gloss plan` numbers them) rather than at the end of the frame.
-        #[arg(long, requires = "inspect")]
-        after: Option<usize>,
-    },
-    /// Print GL_VERSION, GL_RENDERER, GLSL version, backend and context flags.
-    Info,
-    /// Print the passes and render targets a scene's frame uses.
-    Plan {
-        scene: PathBuf,
-        #[arg(long, value_enum)]
-        path: Option<RenderPath>,
-        #[arg(long)]
-        lights: Option<usize>,
-    },
-    /// List the scenes shipped inside gloss (usable from any directory by name).
-    Scenes,
-    /// Measure speed against error for render paths, light counts and cutoffs.
-    Bench(gloss::bench::BenchArgs),
-}
 
 fn main() -> ExitCode {
     std::panic::set_hook(Box::new(|info| {
@@ -175,6 +93,7 @@ fn load_scene(
     if let Some(n) = lights {
         scene.set_light_count(n)?;
     }
+    scene.print_warnings(&scene.warnings());
     Ok(scene)
 }
 
@@ -204,6 +123,7 @@ fn run(cli: Cli) -> Result<()> {
                 )
             } else {
                 let scene = Scene::load_with(&scene_path, &cli.set)?;
+                scene.print_warnings(&scene.warnings());
                 let out = std::env::current_dir()?.join(format!("gloss-{}.png", scene.name));
                 let backend = headless_backend(cli.backend)?;
                 render_to_png(&scene, backend, cli.debug, &out, None)?;
@@ -259,7 +179,12 @@ fn run(cli: Cli) -> Result<()> {
             lights,
         }) => {
             let s = load_scene(&scene, &cli.set, path, lights)?;
+            let unchecked = gloss::frame::check::check_without_gl(&s)?;
             print!("{}", gloss::techniques::plan(&s));
+            println!(
+                "not checked without a GL context (gloss render checks them): {}",
+                unchecked.join(", ")
+            );
             Ok(())
         }
         Some(Command::Scenes) => {

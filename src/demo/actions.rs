@@ -231,6 +231,7 @@ impl Demo {
     fn load(&mut self, path: &Path) -> Result<()> {
         let scene = Scene::load_with(path, &self.options.overrides)?;
         self.rebuild(&scene)?;
+        scene.print_warnings(&scene.warnings());
         if let Some(run) = self.running.as_mut() {
             run.panel.inspect = None;
         }

@@ -77,6 +77,7 @@ pub fn run(scene_path: &Path, options: DemoOptions) -> Result<()> {
     }
     // Load the scene before opening anything: a bad file fails fast.
     let scene = Scene::load_with(scene_path, &options.overrides)?;
+    scene.print_warnings(&scene.warnings());
     let event_loop = window::event_loop()?;
     event_loop.set_control_flow(ControlFlow::Poll);
     let mut demo = Demo {

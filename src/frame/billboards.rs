@@ -107,11 +107,7 @@ pub fn instance_data(billboards: &[Billboard], order: &[usize]) -> Vec<f32> {
 /// Every sprite of `scene`, resized to the first one's size, side by side in
 /// one sRGB texture with its alpha (mipmapped).
 fn sprite_sheet(gl: &Gl, scene: &Scene) -> Result<Texture> {
-    let mut images = Vec::with_capacity(scene.sprites.len());
-    for p in &scene.sprites {
-        let img = load_rgba8(p).map_err(|e| anyhow!("billboard sprite: {e:#}"))?;
-        images.push(img);
-    }
+    let images = load_sprites(scene)?;
     let (w, h) = images[0].dimensions();
     let n = images.len() as u32;
     let max = unsafe { gl.get_parameter_i32(glow::MAX_TEXTURE_SIZE) } as u32;
@@ -130,6 +126,16 @@ fn sprite_sheet(gl: &Gl, scene: &Scene) -> Result<Texture> {
         image::imageops::replace(&mut sheet, &img, (i as u32 * w) as i64, 0);
     }
     Texture::from_rgba8(gl, w * n, h, sheet.as_raw(), true, SHEET_SAMPLING)
+}
+
+/// Every sprite of `scene`, decoded (`gloss plan` loads them the same way).
+pub fn load_sprites(scene: &Scene) -> Result<Vec<image::RgbaImage>> {
+    let mut images = Vec::with_capacity(scene.sprites.len());
+    for p in &scene.sprites {
+        let img = load_rgba8(p).map_err(|e| anyhow!("billboard sprite: {e:#}"))?;
+        images.push(img);
+    }
+    Ok(images)
 }
 
 impl Drop for BillboardGpu {

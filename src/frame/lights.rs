@@ -15,9 +15,30 @@ use glam::{Mat4, Quat, Vec3, Vec4};
 /// Bytes per light in the std140 `Lights` block (four vec4).
 pub const LIGHT_STRIDE: usize = 64;
 
-/// How many lights fit in a uniform block of `max_block_bytes` (at most 1024).
+/// The most lights gloss's `Lights` block holds on any GL.
+pub const MAX_LIGHTS: usize = 1024;
+
+/// The lights that fit on every GL: GL 3.3 promises
+/// GL_MAX_UNIFORM_BLOCK_SIZE >= 16384 bytes, 256 lights of 64 bytes.
+pub const LIGHTS_ON_EVERY_GL: usize = 16384 / LIGHT_STRIDE;
+
+/// How many lights fit in a uniform block of `max_block_bytes` (at most `MAX_LIGHTS`).
 pub fn max_lights(max_block_bytes: i32) -> usize {
-    (max_block_bytes.max(16384) as usize / LIGHT_STRIDE).min(1024)
+    (max_block_bytes.max(16384) as usize / LIGHT_STRIDE).min(MAX_LIGHTS)
+}
+
+/// Refuse a scene with more than `max` lights; `why` says where `max`
+/// comes from. The renderer checks against its GL, `gloss plan` against
+/// `MAX_LIGHTS`: the message is the same up to `why`.
+pub fn check_light_count(scene: &Scene, max: usize, why: &str) -> anyhow::Result<()> {
+    if scene.lights.len() > max {
+        anyhow::bail!(
+            "{}: {} lights, but at most {max} fit in the lights uniform block ({why})",
+            scene.path.display(),
+            scene.lights.len()
+        );
+    }
+    Ok(())
 }
 
 /// The mesh that bounds a light's reach, with its model matrix.

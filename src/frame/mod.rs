@@ -14,8 +14,11 @@
 //! - `timing`: pass times around glFinish.
 //! - `post`: the post chain's steps, what each reads and writes.
 //! - `views`: the camera's view and the reflected views mirrors add.
+//! - `check`: what `gloss plan` checks without a GL context (the files the
+//!   renderer loads, the light count), with the renderer's own functions.
 
 pub mod billboards;
+pub mod check;
 pub mod draw_list;
 pub mod gbuffer;
 pub mod lights;

@@ -33,11 +33,12 @@ fn load_obj_limited(path: &Path, max_bytes: u64, max_vertices: usize) -> Result<
     let bytes: Vec<u8> = match assets::embedded(path) {
         Some(f) => f.contents().to_vec(),
         None => {
+            // What is there, from its metadata alone: a FIFO is never opened.
+            if let Some(why) = assets::not_a_file(path) {
+                bail!("OBJ file {name} {why}");
+            }
             let meta =
                 std::fs::metadata(path).with_context(|| format!("cannot open OBJ file {name}"))?;
-            if !meta.is_file() {
-                bail!("OBJ file {name} is not a regular file");
-            }
             if meta.len() > max_bytes {
                 bail!(
                     "OBJ file {name} is too large: {} bytes, the limit is {max_bytes} bytes",
@@ -227,7 +228,7 @@ mod tests {
         let path = std::env::temp_dir().join("gloss-no-such-dir/missing.obj");
         let msg = format!("{:#}", load_obj(&path).unwrap_err());
         assert!(
-            msg.contains("cannot open OBJ file") && msg.contains("missing.obj"),
+            msg.contains("OBJ file") && msg.contains("missing.obj does not exist"),
             "{msg}"
         );
     }

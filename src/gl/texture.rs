@@ -314,6 +314,10 @@ pub fn max_level(width: i32, height: i32) -> u32 {
 /// Decode an image file to RGBA8 with v flipped for GL, refusing absurd sizes
 /// before decoding.
 pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
+    // What is there, from its metadata alone: a FIFO is never opened.
+    if let Some(why) = assets::not_a_file(path) {
+        bail!("texture {} {why}", path.display());
+    }
     // A shipped scene's texture is embedded in the binary (src/assets.rs).
     let open = || -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
         let reader: Box<dyn BufReadSeek> = match assets::embedded(path) {

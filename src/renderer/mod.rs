@@ -8,7 +8,7 @@ mod output;
 pub use output::{Output, stencil_color, stencil_image};
 
 use crate::frame::draw_list::DrawList;
-use crate::frame::lights::{FrameLights, LIGHT_STRIDE, max_lights};
+use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_light_count, max_lights};
 use crate::frame::meshes::FrameMeshes;
 use crate::frame::multisample;
 use crate::frame::plan::{FramePlan, Pass};
@@ -27,7 +27,7 @@ use crate::gl::{Gl, Headless};
 use crate::lighting;
 use crate::scene::{Camera, RenderSettings, Scene};
 use crate::techniques;
-use anyhow::{Result, bail};
+use anyhow::Result;
 use glow::HasContext;
 
 pub struct Renderer {
@@ -81,13 +81,13 @@ impl Renderer {
     ) -> Result<Renderer> {
         let max_block = unsafe { gl.get_parameter_i32(glow::MAX_UNIFORM_BLOCK_SIZE) };
         let max_lights = max_lights(max_block);
-        if scene.lights.len() > max_lights {
-            bail!(
-                "{}: {} lights, but this GL's uniform blocks hold at most {max_lights} (GL_MAX_UNIFORM_BLOCK_SIZE = {max_block})",
-                scene.path.display(),
-                scene.lights.len()
-            );
-        }
+        check_light_count(
+            scene,
+            max_lights,
+            &format!(
+                "GL_MAX_UNIFORM_BLOCK_SIZE = {max_block} bytes on this GL, {LIGHT_STRIDE} a light, at most {MAX_LIGHTS}"
+            ),
+        )?;
         let lights = FrameLights::new(scene);
         let plan = FramePlan::new(scene, &lights, techniques::ALL);
         let targets = Targets::new(gl, &target_descs(&plan, output_kind), width, height)?;
@@ -160,13 +160,11 @@ impl Renderer {
     /// uploaded. On an error the renderer
     /// keeps what it had.
     pub fn set_scene_values(&mut self, scene: &Scene) -> Result<()> {
-        if scene.lights.len() > self.max_lights {
-            bail!(
-                "{} lights, but this GL's uniform blocks hold at most {}",
-                scene.lights.len(),
-                self.max_lights
-            );
-        }
+        check_light_count(
+            scene,
+            self.max_lights,
+            "this GL's GL_MAX_UNIFORM_BLOCK_SIZE",
+        )?;
         let old = std::mem::replace(&mut self.scene, scene.clone());
         let lights = FrameLights::new(&self.scene);
         let plan = FramePlan::new(&self.scene, &lights, techniques::ALL);

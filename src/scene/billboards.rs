@@ -122,11 +122,11 @@ fn expand(
         if let Some(i) = sprites.iter().position(|s| *s == p) {
             return Ok(i);
         }
-        if !written.to_ascii_lowercase().ends_with(".png") {
+        if !assets::has_extension(written, "png") {
             bail!("{key}: expected an RGBA .png file, found \"{written}\"");
         }
-        if !assets::is_file(&p) {
-            bail!("{key}: sprite file {} does not exist", p.display());
+        if let Some(why) = assets::not_a_file(&p) {
+            bail!("{key}: sprite file {} {why}", p.display());
         }
         sprites.push(p);
         Ok(sprites.len() - 1)

@@ -121,8 +121,8 @@ pub(super) fn mirror(
         None => None,
         Some(t) => {
             let p = super::resolve::relative_to(base, t);
-            if !assets::is_file(&p) {
-                bail!("{key}.roughness: file {} does not exist", p.display());
+            if let Some(why) = assets::not_a_file(&p) {
+                bail!("{key}.roughness: file {} {why}", p.display());
             }
             Some(p)
         }

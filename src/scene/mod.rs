@@ -29,6 +29,7 @@ mod settings;
 pub mod shadows;
 mod text;
 mod views;
+mod warnings;
 
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
 pub use billboards::{Billboard, BillboardFieldFile, BillboardFile, MAX_BILLBOARDS};
@@ -40,6 +41,7 @@ pub use settings::{
     Shading,
 };
 pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
+pub use text::MAX_MESSAGE_CHARS;
 pub use views::{SplitView, check_viewport};
 
 use crate::assets;
@@ -271,6 +273,9 @@ pub struct Scene {
     /// `[[post]]`: the post-processing chain, in order (empty: none; the
     /// lit scene is the output).
     pub post: Vec<post::PostPass>,
+    /// Every key the file and `--set` wrote, dotted (`render.cutoff`,
+    /// `lights[0].shadow.cube`): `warnings` names those with no effect.
+    pub keys_written: std::collections::BTreeSet<String>,
 }
 
 impl Scene {
@@ -296,6 +301,13 @@ fn read_text(path: &Path) -> Result<String> {
     })
 }
 
+/// A message about the scene file at `path`: its name, then the message,
+/// cut to `text::MAX_MESSAGE_CHARS` (a value quoted from a hostile file can
+/// be megabytes long).
+fn at(path: &Path, e: impl std::fmt::Display) -> anyhow::Error {
+    anyhow!("{}: {}", path.display(), text::quoted(&e.to_string()))
+}
+
 impl Scene {
     /// Read, check and resolve a scene file (on disk, or a shipped one:
     /// src/assets.rs).
@@ -315,32 +327,34 @@ impl Scene {
         if overrides.is_empty() {
             return Scene::parse(text, path);
         }
-        let mut table: toml::Table = toml::from_str(text)
-            .map_err(|e| anyhow!("{}: {}", path.display(), text::quoted(&e.to_string())))?;
+        let mut table: toml::Table = toml::from_str(text).map_err(|e| at(path, e))?;
         for o in overrides {
-            overrides::apply_override(&mut table, o).map_err(|e| anyhow!("--set {o}: {e}"))?;
+            overrides::apply_override(&mut table, o)
+                .map_err(|e| anyhow!("{}", text::quoted(&format!("--set {o}: {e}"))))?;
         }
-        text::floats_in_f32_range(&table, "").map_err(|e| anyhow!("{}: {e}", path.display()))?;
+        text::floats_in_f32_range(&table, "").map_err(|e| at(path, e))?;
+        let keys_written = text::written_keys(&table);
         let file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
-            anyhow!(
-                "{} with --set {}: {}",
-                path.display(),
-                overrides.join(" --set "),
-                e.to_string().trim_end()
-            )
+            let with = format!("with --set {}: {e}", overrides.join(" --set "));
+            anyhow!("{} {}", path.display(), text::quoted(&with))
         })?;
-        resolve(file, path).map_err(|e| anyhow!("{}: {e}", path.display()))
+        let mut scene = resolve(file, path).map_err(|e| at(path, e))?;
+        scene.keys_written = keys_written;
+        Ok(scene)
     }
 
     /// Parse scene text; `path` names the file in messages and anchors relative paths.
+    /// Every message names the file and is at most `text::MAX_MESSAGE_CHARS`
+    /// characters after the name, whatever the file holds.
     pub fn parse(text: &str, path: &Path) -> Result<Scene> {
-        if let Ok(table) = toml::from_str::<toml::Table>(text) {
-            text::floats_in_f32_range(&table, "")
-                .map_err(|e| anyhow!("{}: {e}", path.display()))?;
+        let table = toml::from_str::<toml::Table>(text).ok();
+        if let Some(table) = &table {
+            text::floats_in_f32_range(table, "").map_err(|e| at(path, e))?;
         }
-        let file: SceneFile = toml::from_str(text)
-            .map_err(|e| anyhow!("{}: {}", path.display(), text::quoted(&e.to_string())))?;
-        resolve(file, path).map_err(|e| anyhow!("{}: {e}", path.display()))
+        let file: SceneFile = toml::from_str(text).map_err(|e| at(path, e))?;
+        let mut scene = resolve(file, path).map_err(|e| at(path, e))?;
+        scene.keys_written = table.map(|t| text::written_keys(&t)).unwrap_or_default();
+        Ok(scene)
     }
 
     /// Replace the generated lights with `count` of them (`gloss bench --lights`).

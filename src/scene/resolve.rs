@@ -88,6 +88,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         billboard_list: f.billboards.clone(),
         billboard_fields: f.billboard_fields.clone(),
         post,
+        keys_written: Default::default(),
     })
 }
 
@@ -204,12 +205,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         let diffuse_texture = match &m.diffuse_texture {
             Some(t) => {
                 let p = relative_to(base, t);
-                if !assets::is_file(&p) {
-                    bail!(
-                        "{}: file {} does not exist",
-                        key("diffuse_texture"),
-                        p.display()
-                    );
+                if let Some(why) = assets::not_a_file(&p) {
+                    bail!("{}: file {} {why}", key("diffuse_texture"), p.display());
                 }
                 Some(p)
             }
@@ -252,10 +249,10 @@ fn objects(
             "cylinder" => MeshSource::Cylinder,
             "cone" => MeshSource::Cone,
             "torus" => MeshSource::Torus,
-            file if file.ends_with(".obj") => {
+            file if assets::has_extension(file, "obj") => {
                 let p = relative_to(base, file);
-                if !assets::is_file(&p) {
-                    bail!("{}: file {} does not exist", key("mesh"), p.display());
+                if let Some(why) = assets::not_a_file(&p) {
+                    bail!("{}: file {} {why}", key("mesh"), p.display());
                 }
                 MeshSource::Obj(p)
             }

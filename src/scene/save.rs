@@ -166,7 +166,7 @@ impl Scene {
             for o in objects {
                 if let Some(m) = o
                     .get_mut("mesh")
-                    .filter(|m| m.as_str().is_some_and(|s| s.ends_with(".obj")))
+                    .filter(|m| m.as_str().is_some_and(|s| assets::has_extension(s, "obj")))
                 {
                     fix(m);
                 }

@@ -4,22 +4,54 @@
 
 use anyhow::{Result, bail};
 
-/// The most of a parser's message gloss prints: the TOML parser quotes the
-/// offending line, which in a hostile file can be megabytes long.
+/// The most of a message about a scene file gloss prints: the TOML parser
+/// quotes the offending line, and a check quotes the value it refuses,
+/// either of which in a hostile file can be megabytes long.
 pub const MAX_MESSAGE_CHARS: usize = 2000;
 
-/// A parser's message, trimmed, and cut at `MAX_MESSAGE_CHARS` with a note
-/// of how much was left out.
+/// A message, trimmed, and cut at `MAX_MESSAGE_CHARS` with a note of how
+/// much was left out.
 pub(super) fn quoted(message: &str) -> String {
     let m = message.trim_end();
     match m.char_indices().nth(MAX_MESSAGE_CHARS) {
         None => m.to_string(),
         Some((cut, _)) => format!(
-            "{}... ({} more characters of the parser's message left out)",
+            "{}... ({} more characters of the message left out)",
             &m[..cut],
             m[cut..].chars().count()
         ),
     }
+}
+
+/// Every key `table` writes, dotted from the top (`render.cutoff`,
+/// `lights[0].shadow.cube`, `materials.glass.alpha_ref`): the keys of a
+/// table and of each entry of an array of tables are followed; any other
+/// value is a leaf.
+pub(super) fn written_keys(table: &toml::Table) -> std::collections::BTreeSet<String> {
+    fn walk(t: &toml::Table, prefix: &str, out: &mut std::collections::BTreeSet<String>) {
+        for (k, v) in t {
+            let key = if prefix.is_empty() {
+                k.clone()
+            } else {
+                format!("{prefix}.{k}")
+            };
+            match v {
+                toml::Value::Table(inner) => walk(inner, &key, out),
+                toml::Value::Array(a) => {
+                    for (i, x) in a.iter().enumerate() {
+                        if let toml::Value::Table(inner) = x {
+                            walk(inner, &format!("{key}[{i}]"), out);
+                        }
+                    }
+                }
+                _ => {}
+            }
+            out.insert(key);
+        }
+    }
+    let mut out = std::collections::BTreeSet::new();
+    walk(table, "", &mut out);
+    out
 }
 
 /// Every float of the file fits a 32-bit float (gloss's numbers are f32):

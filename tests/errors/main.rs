@@ -5,15 +5,21 @@
 //! * OBJ and PNG files that are malformed, truncated or absurdly large;
 //! * shaders that fail to compile, reported as `glsl/<file>:<line>`;
 //! * the CLI: stderr starts with "error:", the exit code is non-zero, no
-//!   panic, and a failed render leaves the user's old picture alone.
+//!   panic, and a failed render leaves the user's old picture alone;
+//! * a file a scene names that is a directory, a FIFO or a device is named
+//!   for what it is; `gloss plan` refuses what `gloss render` refuses;
+//! * keys that have no effect get a warning.
 
 mod cli;
 mod gl_version;
 mod mirror;
 mod obj;
+mod paths;
+mod plan;
 mod png;
 mod scene;
 mod shaders;
+mod warnings;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -1,0 +1,91 @@
+//! The `gloss` command line, as clap parses it: the library holds it so
+//! that tests can parse argument vectors (`Cli::try_parse_from`) without
+//! running the binary; src/main.rs runs what it parses.
+
+use crate::gl::Backend;
+use crate::scene::{RenderPath, Shading};
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+
+#[derive(Parser)]
+#[command(
+    name = "gloss",
+    version,
+    about = "OpenGL 3.3 core reference renderer for a real-time graphics course"
+)]
+pub struct Cli {
+    /// egl | osmesa | window (default: window when a display exists, else egl)
+    #[arg(long, global = true, value_enum)]
+    pub backend: Option<Backend>,
+    /// GL debug output on; any GL error is fatal.
+    #[arg(long, global = true)]
+    pub debug: bool,
+    /// Set a scene-file key, as if written in the file: render.cutoff=0.01,
+    /// render.path=volumes, render.ambient=[0.1,0.1,0.1]. Repeatable.
+    #[arg(long = "set", global = true, value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+    /// Demo: start with the panel hidden (Tab shows it).
+    #[arg(long)]
+    pub no_panel: bool,
+    /// Demo: do not time each pass (glFinish after every pass) while the panel is shown.
+    #[arg(long)]
+    pub no_pass_times: bool,
+    /// Demo: exit after this many frames (smoke tests).
+    #[arg(long)]
+    pub frames: Option<u32>,
+    /// Demo / default render: the scene (default scenes/default.toml).
+    pub scene: Option<PathBuf>,
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// A buffer `gloss render --inspect` writes instead of the image.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Inspect {
+    /// The output's stencil buffer at the end of the frame.
+    Stencil,
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// Render a scene headless to a PNG.
+    Render {
+        scene: PathBuf,
+        #[arg(short, long)]
+        output: PathBuf,
+        /// WIDTHxHEIGHT (default: the scene's render.size)
+        #[arg(long, value_parser = crate::bench::parse_size)]
+        size: Option<(u32, u32)>,
+        /// Override the scene's render path.
+        #[arg(long, value_enum)]
+        path: Option<RenderPath>,
+        /// Override the scene's shading mode.
+        #[arg(long, value_enum)]
+        shading: Option<Shading>,
+        /// Number of generated lights (scenes with a [light_grid]).
+        #[arg(long)]
+        lights: Option<usize>,
+        /// Write a buffer other than the image: `stencil` (each stencil
+        /// value its own colour, 0 black).
+        #[arg(long, value_enum)]
+        inspect: Option<Inspect>,
+        /// With --inspect: the buffer as it is after this pass (1-based, as
+        /// `gloss plan` numbers them) rather than at the end of the frame.
+        #[arg(long, requires = "inspect")]
+        after: Option<usize>,
+    },
+    /// Print GL_VERSION, GL_RENDERER, GLSL version, backend and context flags.
+    Info,
+    /// Print the passes and render targets a scene's frame uses.
+    Plan {
+        scene: PathBuf,
+        #[arg(long, value_enum)]
+        path: Option<RenderPath>,
+        #[arg(long)]
+        lights: Option<usize>,
+    },
+    /// List the scenes shipped inside gloss (usable from any directory by name).
+    Scenes,
+    /// Measure speed against error for render paths, light counts and cutoffs.
+    Bench(crate::bench::BenchArgs),
+}

@@ -1,0 +1,70 @@
+//! What can be checked of a frame without a GL context (`gloss plan`): the
+//! light count against the most any GL holds, and every mesh, texture and
+//! sprite the renderer would load, read and decoded by the same functions
+//! in the same order (`scene::meshes::mesh_data`, `gl::texture::load_rgba8`,
+//! `billboards::load_sprites`), so a file `gloss render` refuses is refused
+//! here with the same message. What only a GL can answer is returned, in
+//! words, for the plan to print.
+
+use crate::frame::billboards::load_sprites;
+use crate::frame::lights::{LIGHTS_ON_EVERY_GL, MAX_LIGHTS, check_light_count};
+use crate::frame::multisample;
+use crate::gl::texture::load_rgba8;
+use crate::scene::meshes::mesh_data;
+use crate::scene::{MeshSource, Scene};
+use anyhow::Result;
+use std::collections::HashSet;
+use std::path::PathBuf;
+
+/// Check `scene` as far as the CPU can; returns what it could not check
+/// (each a phrase: "GL_MAX_SAMPLES for render.msaa = 8").
+pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
+    check_light_count(
+        scene,
+        MAX_LIGHTS,
+        &format!("gloss's limit on any GL; every GL 3.3 holds {LIGHTS_ON_EVERY_GL}"),
+    )?;
+    // The draw list's order: each object's mesh, its material's texture,
+    // its mirror's roughness texture; each file once.
+    let mut meshes: HashSet<&MeshSource> = HashSet::new();
+    let mut textures: HashSet<&PathBuf> = HashSet::new();
+    for o in &scene.objects {
+        if meshes.insert(&o.mesh) {
+            mesh_data(&o.mesh)?;
+        }
+        let m = &scene.materials[o.material];
+        if let Some(p) = &m.diffuse_texture
+            && textures.insert(p)
+        {
+            load_rgba8(p)?;
+        }
+        if let Some(p) = o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
+            load_rgba8(p)?;
+        }
+    }
+    let sprites = load_sprites(scene)?;
+    let (w, h) = scene.render.size;
+    let mut unchecked = vec![
+        "the shaders compile".to_string(),
+        "the framebuffers are complete".to_string(),
+        format!("GL_MAX_TEXTURE_SIZE for the {w}x{h} targets"),
+    ];
+    if let Some(first) = sprites.first() {
+        let (sw, sh) = first.dimensions();
+        unchecked.push(format!(
+            "GL_MAX_TEXTURE_SIZE for the {}x{sh} sprite sheet",
+            u64::from(sw) * sprites.len() as u64
+        ));
+    }
+    let samples = multisample::samples(scene);
+    if samples > 1 {
+        unchecked.push(format!("GL_MAX_SAMPLES for render.msaa = {samples}"));
+    }
+    if scene.lights.len() > LIGHTS_ON_EVERY_GL {
+        unchecked.push(format!(
+            "GL_MAX_UNIFORM_BLOCK_SIZE for {} lights (every GL 3.3 holds {LIGHTS_ON_EVERY_GL})",
+            scene.lights.len()
+        ));
+    }
+    Ok(unchecked)
+}

@@ -1,0 +1,244 @@
+//! Keys that parse but change nothing: a setting of a technique the scene's
+//! path does not run, a light's key its type ignores, a camera's key its
+//! projection ignores. Each is legal (the demo switches paths and types, and
+//! "save as" writes every render knob), so it is a warning, not an error;
+//! `gloss render`, `plan`, `bench` and the demo print them at start-up.
+//!
+//! A key is reported only when the file (or `--set`) wrote it, and, where
+//! the key has a default, only when its value differs from the default: the
+//! default is what "no effect" looks like anyway, and "save as" writes it.
+
+use super::{
+    Accumulation, AlphaTest, BillboardMode, CubeRender, LightKind, MirrorOrder, Projection,
+    RenderPath, Scene, Shading, ShadowFit,
+};
+
+impl Scene {
+    /// What the scene sets to no effect, one line per key, each starting
+    /// with the key (`render.cutoff = 0.01 has no effect on the forward
+    /// path: ...`). Empty for a scene whose every key counts.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut w = Vec::new();
+        self.render_warnings(&mut w);
+        self.light_warnings(&mut w);
+        self.material_warnings(&mut w);
+        self.camera_warnings(&mut w);
+        w
+    }
+
+    /// The warnings that hold on every render path (`gloss bench` runs the
+    /// scene on several).
+    pub fn warnings_on_every_path(&self) -> Vec<String> {
+        let mut common = self.warnings();
+        for &path in RenderPath::ALL {
+            let mut s = self.clone();
+            s.render.path = path;
+            let there = s.warnings();
+            common.retain(|w| there.contains(w));
+        }
+        common
+    }
+
+    /// Print `warnings` on stderr, "warning: FILE: ..." each.
+    pub fn print_warnings(&self, warnings: &[String]) {
+        for w in warnings {
+            eprintln!("warning: {}: {w}", self.path.display());
+        }
+    }
+
+    fn written(&self, key: &str) -> bool {
+        self.keys_written.contains(key)
+    }
+
+    fn render_warnings(&self, w: &mut Vec<String>) {
+        let r = &self.render;
+        let path = r.path;
+        let on_path = format!("has no effect on the {path} path");
+        let mut warn = |key: &str, set: bool, value: String, why: &str| {
+            if set && self.written(&format!("render.{key}")) {
+                w.push(format!("render.{key} = {value} {why}"));
+            }
+        };
+        warn(
+            "shading",
+            path != RenderPath::Forward && r.shading != Shading::Phong,
+            format!("\"{}\"", r.shading),
+            &format!(
+                "{on_path}: only the forward path shades per triangle or per vertex (the G-buffer paths light every pixel)"
+            ),
+        );
+        warn(
+            "cutoff",
+            matches!(path, RenderPath::Forward | RenderPath::Deferred) && r.cutoff != 5.0 / 256.0,
+            r.cutoff.to_string(),
+            &format!(
+                "{on_path}: only light volumes (the volumes and prepass paths) end where a light falls to it"
+            ),
+        );
+        warn(
+            "stencil_volumes",
+            path != RenderPath::Volumes && r.stencil_volumes,
+            "true".into(),
+            &format!(
+                "{on_path}: the stencil test marks light volumes, which only the volumes path draws"
+            ),
+        );
+        warn(
+            "accumulation",
+            path == RenderPath::Forward && r.accumulation != Accumulation::Rgba16f,
+            format!("\"{}\"", r.accumulation),
+            &format!("{on_path}: it has no light accumulation target (the deferred paths have)"),
+        );
+        warn(
+            "msaa",
+            path != RenderPath::Forward && r.msaa > 1,
+            r.msaa.to_string(),
+            &format!(
+                "{on_path}: MSAA is on the forward path only (a [[post]] fxaa pass anti-aliases every path)"
+            ),
+        );
+        let no_mirror = "has no effect: no object is a mirror";
+        let mirrors = self.objects.iter().any(|o| o.mirror.is_some());
+        for (key, set, value) in [
+            (
+                "mirror_order",
+                r.mirror_order != MirrorOrder::NormalFirst,
+                format!("\"{}\"", r.mirror_order),
+            ),
+            (
+                "mirror_depth",
+                r.mirror_depth != 1,
+                r.mirror_depth.to_string(),
+            ),
+            ("mirror_clip", !r.mirror_clip, "false".into()),
+            ("mirror_winding", !r.mirror_winding, "false".into()),
+        ] {
+            warn(key, !mirrors && set, value, no_mirror);
+        }
+        let billboards = !self.billboards.is_empty();
+        warn(
+            "billboards",
+            !billboards && r.billboards != BillboardMode::AlphaTest,
+            format!("\"{}\"", r.billboards),
+            "has no effect: the scene has no billboards",
+        );
+        warn(
+            "billboard_alpha_ref",
+            r.billboard_alpha_ref != 0.5 && !billboards,
+            r.billboard_alpha_ref.to_string(),
+            "has no effect: the scene has no billboards",
+        );
+        warn(
+            "billboard_alpha_ref",
+            r.billboard_alpha_ref != 0.5 && billboards && r.billboards != BillboardMode::AlphaTest,
+            r.billboard_alpha_ref.to_string(),
+            &format!(
+                "has no effect with render.billboards = \"{}\": only the alpha test compares with it",
+                r.billboards
+            ),
+        );
+        let transparent =
+            (self.objects.iter()).any(|o| self.materials[o.material].is_transparent());
+        warn(
+            "sort_transparent",
+            !transparent && !r.sort_transparent,
+            "false".into(),
+            "has no effect: no object's material has opacity < 1",
+        );
+        warn(
+            "post_chain",
+            self.post.is_empty() && r.post_chain != super::post::ChainForm::PingPong,
+            format!("\"{}\"", r.post_chain),
+            "has no effect: the scene has no [[post]] passes",
+        );
+    }
+
+    fn light_warnings(&self, w: &mut Vec<String>) {
+        let listed = self.lights.len() - self.grid_lights.unwrap_or(0);
+        for (i, l) in self.lights[..listed].iter().enumerate() {
+            let kind = match l.kind {
+                LightKind::Directional => "directional",
+                LightKind::Point => "point",
+                LightKind::Spot => "spot",
+            };
+            let mut warn = |key: &str, ignored: bool, why: &str| {
+                let key = format!("lights[{i}].{key}");
+                if ignored && self.written(&key) {
+                    w.push(format!("{key} has no effect on a {kind} light: {why}"));
+                }
+            };
+            let directional = l.kind == LightKind::Directional;
+            warn(
+                "direction",
+                l.kind == LightKind::Point,
+                "a point light shines every way",
+            );
+            warn(
+                "position",
+                directional,
+                "a directional light is infinitely far away (only its direction counts)",
+            );
+            warn(
+                "attenuation",
+                directional,
+                "a directional light is not attenuated",
+            );
+            for angle in ["inner_angle", "outer_angle"] {
+                warn(
+                    angle,
+                    l.kind != LightKind::Spot,
+                    "only a spot light has a cone",
+                );
+            }
+            let shadow = l.shadow.as_ref();
+            warn(
+                "shadow.cube",
+                shadow.is_some_and(|s| s.cube != CubeRender::SixPasses)
+                    && l.kind != LightKind::Point,
+                "only a point light's shadow map is a cube",
+            );
+            warn(
+                "shadow.fit",
+                shadow.is_some_and(|s| s.fit != ShadowFit::Visible) && !directional,
+                "only a directional light's shadow box is fitted (spot and point lights see from their position)",
+            );
+        }
+    }
+
+    fn material_warnings(&self, w: &mut Vec<String>) {
+        for (index, m) in self.materials.iter().enumerate().skip(1) {
+            let key = format!("materials.{}", m.name);
+            let fixed = matches!(m.alpha_test, AlphaTest::Always | AlphaTest::Never);
+            if fixed && m.alpha_ref != 0.5 && self.written(&format!("{key}.alpha_ref")) {
+                w.push(format!(
+                    "{key}.alpha_ref = {} has no effect with alpha_test = \"{}\": that test compares with nothing",
+                    m.alpha_ref, m.alpha_test
+                ));
+            }
+            if !self.objects.iter().any(|o| o.material == index) {
+                w.push(format!("{key} has no effect: no object uses it"));
+            }
+        }
+    }
+
+    fn camera_warnings(&self, w: &mut Vec<String>) {
+        let views = self.views.iter().enumerate();
+        let cameras = std::iter::once(("camera".to_string(), &self.camera)).chain(
+            views.filter_map(|(i, v)| Some((format!("views[{i}].camera"), v.camera.as_ref()?))),
+        );
+        for (key, c) in cameras {
+            let (ignored, projection) = match c.projection {
+                Projection::Perspective { .. } => ("half_height", "a perspective"),
+                Projection::Orthographic { .. } => ("fov_y", "an orthographic"),
+            };
+            let key = format!("{key}.{ignored}");
+            if self.written(&key) {
+                let why = match ignored {
+                    "fov_y" => "an orthographic camera's view box is half_height high",
+                    _ => "a perspective camera's view widens with fov_y",
+                };
+                w.push(format!("{key} has no effect on {projection} camera: {why}"));
+            }
+        }
+    }
+}

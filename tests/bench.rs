@@ -130,3 +130,40 @@ fn bench_varies_any_scene_key_against_a_reference() {
     assert!(!bad.status.success());
     assert!(String::from_utf8_lossy(&bad.stderr).contains("no_such"));
 }
+
+#[test]
+fn the_post_floor_counts_each_pass_at_the_size_it_draws() {
+    // Bloom's blurs run in mip levels 1-4: at 160x90 they fill 80x45,
+    // 40x22, 20x11 and 10x5 pixels, 0.330 of a screen a direction; its
+    // merge and the tone map fill one screen each.
+    let out = std::env::temp_dir().join("gloss-bench-post-floor");
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "scenes/bloom.toml"])
+        .args(["--vary", "render.post_chain=ping_pong"])
+        .args(["--reference", "render.post_chain=ping_pong"])
+        .args([
+            "--frames", "1", "--warmup", "0", "--size", "160x90", "--out",
+        ])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let row = |name: &str| -> (usize, f64) {
+        let l = (stdout.lines())
+            .find(|l| l.trim_start().starts_with(name))
+            .unwrap_or_else(|| panic!("no row {name}:\n{stdout}"));
+        let cols: Vec<&str> = l[name.len() + 2..].split_whitespace().collect();
+        (cols[0].parse().unwrap(), cols[1].parse().unwrap())
+    };
+    let level = 80.0 * 45.0 + 40.0 * 22.0 + 20.0 * 11.0 + 10.0 * 5.0;
+    let want = format!("{:.3}", level / (160.0 * 90.0));
+    for name in ["bloom downsample", "bloom blur h", "bloom blur v"] {
+        let (steps, screens) = row(name);
+        assert_eq!(steps, 4, "{name}\n{stdout}");
+        assert_eq!(format!("{screens:.3}"), want, "{name}\n{stdout}");
+    }
+    assert_eq!(row("bloom merge"), (1, 1.0), "{stdout}");
+    assert_eq!(row("tone mapping"), (1, 1.0), "{stdout}");
+}

@@ -10,7 +10,7 @@
 // of 2^k pixels a texel holds pixel x's light at (x + 0.5) / 2^k texels:
 // each of its texels is the mean of the 2^k pixels from 2^k j on (the
 // downsample), also where 2^k does not divide the image's size.
-#include "post/bloom_sanitise.glsl"
+#include "post/finite.glsl"
 
 uniform sampler2D u_image;   // the chain's previous image, one level
 uniform sampler2D u_blur0;   // blur i's texture (the same mip texture for
@@ -33,7 +33,7 @@ vec4 blur(sampler2D level, float lod, float block, vec4 g) {
 }
 
 void main() {
-    vec4 g = bloom_sanitise(texelFetch(u_image, ivec2(gl_FragCoord.xy), 0));
+    vec4 g = finite(texelFetch(u_image, ivec2(gl_FragCoord.xy), 0));
     vec4 sum = u_weight[0] * g
              + u_weight[1] * blur(u_blur0, u_lod[0], u_block[0], g)
              + u_weight[2] * blur(u_blur1, u_lod[1], u_block[1], g)

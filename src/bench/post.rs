@@ -1,9 +1,11 @@
 //! The post chain against its fill-rate floor: each post pass of a scene's
 //! chain timed (median over the measured frames, glFinish around each
-//! pass), against what the same number of full-screen steps would cost at
-//! the opaque full-screen rate of this machine. That rate is measured in
-//! the same run: the `invert` pass (one texel fetch, one RGBA16F write a
-//! pixel) of a chain drawn at the same size.
+//! pass), against what filling its pixels would cost at the opaque
+//! full-screen rate of this machine. A pass's pixels are its target's at
+//! the mip level it draws into (`Pass::level`: bloom's blurs run at 1/4,
+//! 1/16 ... of the image). The rate is measured in the same run: the
+//! `invert` pass (one texel fetch, one RGBA16F write a pixel) of a chain
+//! drawn at the same size.
 //!
 //! A pass near 1x is bound by filling pixels; far above, by its own work
 //! per pixel (a blur's taps, bloom's levels).
@@ -11,19 +13,27 @@
 use super::{BenchArgs, Headless, Stats, add_pass_times};
 use crate::frame::Runs;
 use crate::gl::program::Sources;
+use crate::gl::texture::level_size;
 use crate::renderer::Renderer;
 use crate::scene::Scene;
 use crate::scene::post::chain;
 use crate::techniques::ALL;
 use anyhow::Result;
 
+/// One post pass's (or one name's passes') time and size.
+struct PostTime {
+    name: String,
+    /// Median over the measured frames.
+    ms: f64,
+    /// How many draws of this name a frame makes.
+    steps: usize,
+    /// The pixels they fill together.
+    pixels: u64,
+}
+
 /// Each post pass's median time (ms) over `args.frames` frames after the
-/// warm-up, in chain order, with the number of full-screen steps it draws.
-fn post_times(
-    ctx: &Headless,
-    args: &BenchArgs,
-    scene: &Scene,
-) -> Result<Vec<(String, f64, usize)>> {
+/// warm-up, in chain order, with the draws and pixels of its name.
+fn post_times(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<Vec<PostTime>> {
     let (w, h) = scene.render.size;
     let mut r = Renderer::new(
         &ctx.gl,
@@ -42,23 +52,36 @@ fn post_times(
         }
     }
     // The post passes, by name, with the steps their entries take.
-    let mut out: Vec<(String, f64, usize)> = Vec::new();
+    let mut out: Vec<PostTime> = Vec::new();
     for p in r
         .plan
         .passes
         .iter()
         .filter(|p| ALL[p.technique].runs == Runs::AfterViews)
     {
-        if out.iter().any(|(n, _, _)| n == p.name) {
+        if out.iter().any(|t| t.name == p.name) {
             continue;
         }
         // A separable blur is two passes of one name; two entries of one
         // kind are summed (as `add_pass_times` sums their times).
-        let steps = (r.plan.passes.iter()).filter(|q| q.name == p.name).count();
+        let alike: Vec<_> = (r.plan.passes.iter())
+            .filter(|q| q.name == p.name)
+            .collect();
+        let pixels = (alike.iter())
+            .map(|q| {
+                let (lw, lh) = level_size(w as i32, h as i32, q.level);
+                lw as u64 * lh as u64
+            })
+            .sum();
         let ms = (passes.iter_mut())
             .find(|(n, _)| n == p.name)
             .map_or(0.0, |(_, v)| Stats::from_samples(v).median);
-        out.push((p.name.to_string(), ms, steps));
+        out.push(PostTime {
+            name: p.name.to_string(),
+            ms,
+            steps: alike.len(),
+            pixels,
+        });
     }
     Ok(out)
 }
@@ -75,29 +98,35 @@ pub fn floor_table(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<St
     ])?;
     let step_ms = post_times(ctx, args, &probe)?
         .into_iter()
-        .find(|(n, _, _)| n == "invert")
-        .map_or(0.0, |(_, ms, _)| ms);
-    let mpix = f64::from(w) * f64::from(h) / 1e6;
+        .find(|t| t.name == "invert")
+        .map_or(0.0, |t| t.ms);
+    let full = f64::from(w) * f64::from(h);
     let mut s = format!(
         "post chain at {w}x{h}: opaque full-screen rate {:.1} Mpixel/s (one invert step: {step_ms:.2} ms)\n",
-        mpix / (step_ms / 1e3)
+        full / 1e6 / (step_ms / 1e3)
     );
     s.push_str(&format!(
-        "  {:<18} {:>6} {:>10} {:>10} {:>8}\n",
-        "pass", "steps", "ms", "floor ms", "x floor"
+        "  {:<18} {:>6} {:>8} {:>10} {:>10} {:>8}\n",
+        "pass", "steps", "screens", "ms", "floor ms", "x floor"
     ));
-    let (mut total, mut floor) = (0.0, 0.0);
-    for (name, ms, steps) in post_times(ctx, args, scene)? {
-        let f = steps as f64 * step_ms;
+    let (mut total, mut floor, mut screens) = (0.0, 0.0, 0.0);
+    for t in post_times(ctx, args, scene)? {
+        // Its pixels in full screens, at the full-screen rate.
+        let n = t.pixels as f64 / full;
+        let f = n * step_ms;
         s.push_str(&format!(
-            "  {name:<18} {steps:>6} {ms:>10.2} {f:>10.2} {:>8.2}\n",
-            ms / f
+            "  {:<18} {:>6} {n:>8.3} {:>10.2} {f:>10.2} {:>8.2}\n",
+            t.name,
+            t.steps,
+            t.ms,
+            t.ms / f
         ));
-        total += ms;
+        total += t.ms;
         floor += f;
+        screens += n;
     }
     s.push_str(&format!(
-        "  {:<18} {:>6} {total:>10.2} {floor:>10.2} {:>8.2}\n",
+        "  {:<18} {:>6} {screens:>8.3} {total:>10.2} {floor:>10.2} {:>8.2}\n",
         "whole chain",
         "",
         total / floor

@@ -36,6 +36,9 @@ pub struct Pass {
     pub item: usize,
     /// A number the pass needs (the stencil value a mirror pass writes).
     pub value: u32,
+    /// The mip level of its target it draws into (0: the full-size image;
+    /// bloom's blurs draw into levels 1-4).
+    pub level: u32,
 }
 
 impl Pass {
@@ -56,6 +59,7 @@ impl Pass {
             view: 0,
             item: 0,
             value: 0,
+            level: 0,
         }
     }
 
@@ -71,6 +75,11 @@ impl Pass {
             value,
             ..self
         }
+    }
+
+    /// The same pass, drawing into mip level `level` of its target.
+    pub fn level(self, level: u32) -> Pass {
+        Pass { level, ..self }
     }
 
     /// The same pass, drawing for view `view`.

@@ -1,7 +1,7 @@
 //! The post chain in the demo (src/demo/panel/post_chain.rs,
 //! src/demo/post_chain.rs): the panel's widgets, clicked through AccessKit,
-//! add a blur, change its sigma, move it and remove it, and the frame plan
-//! follows; removing or moving gamma is refused with the scene loader's
+//! add a blur, change its sigma, move it and remove it, tune bloom and
+//! FXAA, and the frame plan follows; removing or moving gamma is refused with the scene loader's
 //! message and the old chain keeps running; the inspector shows each of the
 //! chain's textures as it holds them at the end of the frame, one mip
 //! level of a texture, and each of bloom's levels; an edited chain saved and loaded again renders the
@@ -489,6 +489,67 @@ fn the_inspector_shows_each_of_blooms_mip_levels() {
             i + 1
         );
     }
+}
+
+#[test]
+fn the_panel_tunes_bloom_and_fxaa() {
+    let ctx = common::context(common::backend());
+    let mut scene = common::scene("bloom.toml");
+    scene.render.size = (96, 54);
+    let mut r = Renderer::new(&ctx.gl, &ctx.debug, &scene, &Sources::Embedded, 96, 54).unwrap();
+    let before = render(&ctx, &scene, &mut r);
+    let mut d = Driver::new();
+    // Bloom: every blur at full resolution, linear taps, a wider blur2,
+    // more of blur1 in the merge.
+    let steps: [(&str, Option<f64>); 6] = [
+        ("mips", None),
+        ("full", None),
+        ("direct", None),
+        ("linear", None),
+        ("blur2 sigma", Some(30.0)),
+        ("weight of blur1", Some(0.2)),
+    ];
+    for (name, value) in steps {
+        let actions = match value {
+            Some(v) => d.set_value(&input(&scene, &r), name, v),
+            None => d.click(&input(&scene, &r), name),
+        };
+        assert_eq!(apply(&mut scene, &mut r, actions), None, "{name}");
+    }
+    let PostPass::Bloom(b) = &scene.post[0] else {
+        panic!("{:?}", scene.post);
+    };
+    assert_eq!(b.scheme, gloss::scene::bloom::BloomScheme::Full);
+    assert_eq!(b.taps, Taps::Linear);
+    assert_eq!(b.levels[1].sigma, 30.0);
+    assert_eq!(b.weights[1], 0.2);
+    assert!(
+        (r.plan.targets.iter()).any(|t| t.name == "bloom_full1"),
+        "the full-resolution scheme's targets:\n{}",
+        r.plan
+    );
+    let bloomed = render(&ctx, &scene, &mut r);
+    assert_ne!(bloomed, before, "the bloom's settings change the image");
+    // FXAA, added before gamma: its preset and sub-pixel setting.
+    d.click(&input(&scene, &r), "add a pass…");
+    let actions = d.click(&input(&scene, &r), "fxaa");
+    assert_eq!(apply(&mut scene, &mut r, actions), None);
+    d.click(&input(&scene, &r), "12");
+    let actions = d.click(&input(&scene, &r), "39 (12 search steps)");
+    assert_eq!(apply(&mut scene, &mut r, actions), None);
+    let actions = d.set_value(&input(&scene, &r), "subpix (0 off, 1 softer)", 0.25);
+    assert_eq!(apply(&mut scene, &mut r, actions), None);
+    let PostPass::Fxaa(x) = &scene.post[2] else {
+        panic!("{:?}", scene.post);
+    };
+    assert_eq!((x.quality, x.subpix), (39, 0.25));
+    assert!(
+        (r.plan.passes.iter()).any(|p| p.name == "fxaa"),
+        "{}",
+        r.plan
+    );
+    let smoothed = render(&ctx, &scene, &mut r);
+    assert_ne!(smoothed, bloomed, "FXAA changes the image");
 }
 
 #[test]

@@ -10,6 +10,7 @@
 
 mod knob;
 mod post_chain;
+mod post_params;
 mod shadow_knobs;
 mod structure;
 mod timings;

@@ -8,8 +8,7 @@
 //! and refuses a chain a file could not hold (gamma removed, moved or
 //! doubled) with a message shown here, the old chain still running.
 //!
-//! An entry the panel has no widgets for (bloom, and passes to come) is
-//! listed by name and can be moved and removed.
+//! Bloom's and FXAA's widgets are in src/demo/panel/post_params.rs.
 
 use super::{Action, PanelInput};
 use crate::demo::post_chain::{REFUSED, with_added};
@@ -169,12 +168,9 @@ fn parameters(ui: &mut egui::Ui, i: usize, p: &mut PostPass) -> bool {
         }
         PostPass::Box { radius } => changed |= radius_slider(ui, radius),
         PostPass::Kernel(k) => changed |= kernel(ui, i, k),
+        PostPass::Bloom(b) => changed |= super::post_params::bloom(ui, i, b),
+        PostPass::Fxaa(x) => changed |= super::post_params::fxaa(ui, i, x),
         PostPass::Grayscale | PostPass::Invert => {}
-        // Bloom and the passes to come: listed, moved and removed; their
-        // settings stay as the file gives them.
-        _ => {
-            ui.weak("(its settings are the scene file's)");
-        }
     }
     changed
 }
@@ -225,7 +221,7 @@ fn kernel(ui: &mut egui::Ui, i: usize, k: &mut Kernel3) -> bool {
 }
 
 /// A choice among `all`, each shown by `name`.
-fn combo<T: Copy + PartialEq, const N: usize>(
+pub(super) fn combo<T: Copy + PartialEq, const N: usize>(
     ui: &mut egui::Ui,
     id: (&str, usize),
     label: &str,

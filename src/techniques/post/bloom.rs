@@ -50,7 +50,7 @@ pub const BLOOM: Technique = Technique {
     file: file!(),
     shaders: &[
         "common/fullscreen.vert",
-        "post/bloom_sanitise.glsl",
+        "post/finite.glsl",
         "post/bloom_downsample.frag",
         "post/bloom_blur.frag",
         "post/bloom_merge.frag",
@@ -109,11 +109,13 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                     file!(),
                 )
                 .step(s)
+                .level(blur.level)
                 .about(i, step as u32),
             );
             v.push(
                 Pass::new("bloom blur h", blur.temp, format!("blur{k}, {at}"), file!())
                     .step(s + 1)
+                    .level(blur.level)
                     .about(i, step as u32),
             );
             v.push(
@@ -124,6 +126,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                     file!(),
                 )
                 .step(s + 2)
+                .level(blur.level)
                 .about(i, step as u32),
             );
         }

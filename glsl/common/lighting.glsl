@@ -7,6 +7,11 @@
 //                                 is not unit length; normalise instead)
 //   att = 1 / (Kc + Kl d + Kq d^2)
 //
+// A point or spot light is a sphere of radius LIGHT_RADIUS, not a point
+// (src/lighting/sphere_light.rs says why and cites it): att is taken at
+// max(d, LIGHT_RADIUS), and N . L becomes sphere_cosine, which equals it
+// wherever the whole sphere is above the surface's horizon.
+//
 // Every vector is in world space; L points from the surface to the light.
 // src/lighting.rs evaluates the same formula on the CPU for the tests.
 
@@ -26,10 +31,32 @@ layout(std140) uniform Lights {
     Light u_lights[MAX_LIGHTS];
 };
 
+const float LIGHT_RADIUS = 0.01;
+const float PI = 3.14159265358979;
+
+// The sphere against the surface's horizon: returns its N . L, cos_theta
+// while the whole sphere is up, sin_sigma G(cos_theta / sin_sigma) as it
+// sets (the small-angle form, which nothing cancels in), 0 below; and in
+// visible the part of it above the horizon (G), which scales the specular.
+// sin_sigma 0 (a directional light): N . L and a step.
+float sphere_cosine(float cos_theta, float sin_sigma, out float visible) {
+    if (cos_theta >= sin_sigma || cos_theta <= -sin_sigma) {
+        visible = cos_theta > 0.0 ? 1.0 : 0.0;
+        return max(cos_theta, 0.0);
+    }
+    float t = clamp(cos_theta / sin_sigma, -1.0, 1.0);
+    float q = sqrt(1.0 - t * t);
+    float g = (t * PI / 2.0 + t * t * q + t * asin(t) + 2.0 / 3.0 * q * q * q) / PI;
+    visible = clamp(g, 0.0, 1.0);
+    return sin_sigma * visible;
+}
+
 // The light's irradiance factors at P: returns the direction to the light in
-// L and the scalar att * spot factor.
-float light_factor(Light light, vec3 P, out vec3 L) {
+// L, the sine of the light's angular radius in sin_sigma (0: directional),
+// and the scalar att * spot factor.
+float light_factor(Light light, vec3 P, out vec3 L, out float sin_sigma) {
     int type = int(light.position_type.w);
+    sin_sigma = 0.0;
     if (type == LIGHT_DIRECTIONAL) {
         L = -light.direction_radius.xyz;
         return 1.0;
@@ -37,8 +64,10 @@ float light_factor(Light light, vec3 P, out vec3 L) {
     vec3 to_light = light.position_type.xyz - P;
     float d = length(to_light);
     L = to_light / max(d, 1e-20);
+    float r = max(d, LIGHT_RADIUS);
+    sin_sigma = LIGHT_RADIUS / r;
     vec3 k = light.atten_cos_inner.xyz;
-    float att = 1.0 / (k.x + k.y * d + k.z * d * d);
+    float att = 1.0 / (k.x + k.y * r + k.z * r * r);
     if (type == LIGHT_SPOT) {
         float c = dot(-L, light.direction_radius.xyz);
         float cos_outer = light.color_cos_outer.w;
@@ -52,11 +81,13 @@ float light_factor(Light light, vec3 P, out vec3 L) {
 void phong_light(Light light, vec3 P, vec3 N, vec3 V, float shininess,
                  out vec3 diffuse, out vec3 specular) {
     vec3 L;
-    float f = light_factor(light, P, L);
+    float sin_sigma;
+    float f = light_factor(light, P, L, sin_sigma);
     vec3 I = light.color_cos_outer.rgb * f;
-    float n_dot_l = max(dot(N, L), 0.0);
+    float visible;
+    float n_dot_l = sphere_cosine(dot(N, L), sin_sigma, visible);
     vec3 H = normalize(L + V);
-    float s = n_dot_l > 0.0 ? pow(max(dot(N, H), 0.0), shininess) : 0.0;
+    float s = visible > 0.0 ? visible * pow(max(dot(N, H), 0.0), shininess) : 0.0;
     diffuse = I * n_dot_l;
     specular = I * s;
 }

@@ -9,6 +9,7 @@
 pub mod attenuation;
 pub mod bvh;
 pub mod shadow_reference;
+pub mod sphere_light;
 pub mod tonemap;
 pub mod triangle;
 
@@ -21,15 +22,19 @@ pub fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
     t * t * (3.0 - 2.0 * t)
 }
 
-/// Attenuation x spot factor and the unit vector to the light (glsl `light_factor`).
-pub fn light_factor(l: &Light, p: Vec3) -> (f32, Vec3) {
+/// Attenuation x spot factor, the unit vector to the light, and sin of
+/// the light's angular radius (0 for a directional light), as glsl
+/// `light_factor`. A point or spot light is a sphere of radius
+/// `sphere_light::LIGHT_RADIUS`: attenuated at no less than that distance.
+pub fn light_factor(l: &Light, p: Vec3) -> (f32, Vec3, f32) {
     match l.kind {
-        LightKind::Directional => (1.0, -l.direction),
+        LightKind::Directional => (1.0, -l.direction, 0.0),
         _ => {
             let to = l.position - p;
             let d = to.length();
             let dir = to / d.max(1e-20);
-            let mut att = 1.0 / (l.kc + l.kl * d + l.kq * d * d);
+            let r = d.max(sphere_light::LIGHT_RADIUS);
+            let mut att = 1.0 / (l.kc + l.kl * r + l.kq * r * r);
             if l.kind == LightKind::Spot {
                 let c = (-dir).dot(l.direction);
                 att *= smoothstep(
@@ -38,19 +43,20 @@ pub fn light_factor(l: &Light, p: Vec3) -> (f32, Vec3) {
                     c,
                 );
             }
-            (att, dir)
+            (att, dir, sphere_light::sin_sigma(d))
         }
     }
 }
 
 /// Diffuse and specular light from one light (before the material), as glsl `phong_light`.
 pub fn phong_light(l: &Light, p: Vec3, n: Vec3, v: Vec3, shininess: f32) -> (Vec3, Vec3) {
-    let (f, dir) = light_factor(l, p);
+    let (f, dir, sin_sigma) = light_factor(l, p);
     let i = l.radiance() * f;
-    let n_dot_l = n.dot(dir).max(0.0);
+    let horizon = sphere_light::sphere_cosine(n.dot(dir), sin_sigma);
+    let n_dot_l = horizon.cosine;
     let h = (dir + v).normalize();
-    let s = if n_dot_l > 0.0 {
-        n.dot(h).max(0.0).powf(shininess)
+    let s = if horizon.visible > 0.0 {
+        horizon.visible * n.dot(h).max(0.0).powf(shininess)
     } else {
         0.0
     };

@@ -22,6 +22,7 @@ mod common;
 mod deferred_lighting;
 mod deferred_shading;
 mod light_volumes;
+mod numeric_edges;
 mod stencil_light_volumes;
 
 use gloss::image_compare::Tolerance;

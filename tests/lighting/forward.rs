@@ -110,6 +110,25 @@ fn linear_attenuation_only_kq_zero() {
 }
 
 #[test]
+fn a_light_on_the_plane_with_kc_0_is_a_small_sphere() {
+    // N.L = 0 for a point on the plane; the light is a sphere of radius
+    // 0.01 (src/lighting/sphere_light.rs), half above the plane, and the
+    // CPU's Phong with the same sphere gives every pixel, the one under
+    // the light (attenuation at d = 0.01, not 1/0) included.
+    for (y, k) in [
+        (0.0, [0.0, 0.09, 0.032]),
+        (0.0, [0.0, 0.0, 1.0]),
+        (0.005, [0.0, 1.0, 0.0]),
+    ] {
+        let mut scene = common::scene("plane.toml");
+        let l = &mut scene.lights[0];
+        l.position = Vec3::new(0.0, y, 0.0);
+        (l.kc, l.kl, l.kq) = (k[0], k[1], k[2]);
+        check_plane(&scene, &format!("light at height {y}, attenuation {k:?}"));
+    }
+}
+
+#[test]
 fn constant_attenuation_only_kl_kq_zero() {
     let mut scene = common::scene("plane.toml");
     scene.lights[0].kq = 0.0;

@@ -13,6 +13,7 @@
 mod alpha_test;
 mod billboards;
 pub mod bloom;
+pub mod camera_limits;
 mod file;
 pub mod fxaa;
 pub mod knobs;

@@ -241,6 +241,8 @@ fn objects(
         finite(&key("position"), &o.position)?;
         finite(&key("rotation"), &o.rotation)?;
         finite(&key("scale"), &o.scale)?;
+        super::camera_limits::within_world(&key("position"), &o.position)?;
+        super::camera_limits::within_world(&key("scale"), &o.scale)?;
         let mesh = match o.mesh.as_str() {
             "sphere" => MeshSource::Sphere,
             "icosphere" => MeshSource::Icosphere,

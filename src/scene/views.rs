@@ -123,12 +123,14 @@ pub(super) fn camera(c: &CameraFile, key: &str) -> Result<Camera> {
             "{key}.projection: expected \"perspective\" or \"orthographic\", found \"{other}\""
         ),
     };
-    Ok(Camera {
+    let camera = Camera {
         eye,
         target,
         up,
         projection,
         near: c.near,
         far: c.far,
-    })
+    };
+    super::camera_limits::check(&camera, key)?;
+    Ok(camera)
 }

@@ -227,6 +227,7 @@ impl Scene {
             views.filter_map(|(i, v)| Some((format!("views[{i}].camera"), v.camera.as_ref()?))),
         );
         for (key, c) in cameras {
+            w.extend(super::camera_limits::warning(c, &key));
             let (ignored, projection) = match c.projection {
                 Projection::Perspective { .. } => ("half_height", "a perspective"),
                 Projection::Orthographic { .. } => ("fov_y", "an orthographic"),

@@ -369,3 +369,55 @@ fn scene_parse_error_message_is_capped() {
     let msg = scene_fails("scene_parse_error_message_is_capped", &deep, &["left out"]);
     assert!(msg.len() < 3000, "{} characters", msg.len());
 }
+
+#[test]
+fn scene_near_plane_past_the_depth_buffer() {
+    // near 1e-7 with far 20 drew a wrong image (a mean of 63.8 instead of
+    // 180.8 on this plane); 1e-30 drew nothing on three paths.
+    let perspective = |near: &str| {
+        base_with(
+            "projection = \"orthographic\"",
+            "projection = \"perspective\"",
+        )
+        .replace("half_height = 5.0\n", "")
+        .replace("near = 1.0", &format!("near = {near}"))
+    };
+    scene_fails(
+        "scene_near_plane_past_the_depth_buffer",
+        &perspective("1e-7"),
+        &[
+            "camera.near/far",
+            "24-bit depth buffer",
+            "notes 01 §4.4",
+            "Raise near to at least 2.384e-5",
+        ],
+    );
+    scene_fails(
+        "scene_near_plane_underflows",
+        &perspective("1e-30"),
+        &["camera.near = 1e-30", "underflows f32"],
+    );
+}
+
+#[test]
+fn scene_orthographic_view_below_f32() {
+    let text = base_with("half_height = 5.0", "half_height = 1e-30");
+    scene_fails(
+        "scene_orthographic_view_below_f32",
+        &text,
+        &["camera.half_height = 1e-30 is too small to draw", "f32"],
+    );
+}
+
+#[test]
+fn scene_object_scaled_past_the_world() {
+    let text = base_with("scale = [10.0, 1.0, 10.0]", "scale = [1e13, 1.0, 1e13]");
+    scene_fails(
+        "scene_object_scaled_past_the_world",
+        &text,
+        &[
+            "objects[0].scale: 1e13 is past 1e9 scene units",
+            "clipping in f32",
+        ],
+    );
+}

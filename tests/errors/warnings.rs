@@ -152,3 +152,17 @@ fn the_cli_prints_warnings_and_goes_on() {
         &["render.shading = \"flat\" has no effect on the volumes path"],
     );
 }
+
+#[test]
+fn a_near_plane_that_z_fights_is_warned_about() {
+    // far / near = 2e5: one depth step at the far plane is 1.2% of it.
+    let text = base_with(
+        "projection = \"orthographic\"",
+        "projection = \"perspective\"",
+    )
+    .replace("half_height = 5.0\n", "")
+    .replace("near = 1.0", "near = 1e-4");
+    let w = load("warnings_near", &text).warnings();
+    let want = "camera.near/far: one depth step at the far plane is 2.384e-1 units (1.19% of the distance): surfaces closer than that z-fight (notes 01 §4.4). Raise near to 1.192e-3 for 0.1%";
+    assert_eq!(w, [want]);
+}

@@ -8,7 +8,7 @@
 //   att = 1 / (Kc + Kl d + Kq d^2)
 //
 // A point or spot light is a sphere of radius LIGHT_RADIUS, not a point
-// (src/lighting/sphere_light.rs says why and cites it): att is taken at
+// (src/math/sphere_light.rs says why and cites it): att is taken at
 // max(d, LIGHT_RADIUS), and N . L becomes sphere_cosine, which equals it
 // wherever the whole sphere is above the surface's horizon.
 //

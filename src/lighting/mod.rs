@@ -9,10 +9,10 @@
 pub mod attenuation;
 pub mod bvh;
 pub mod shadow_reference;
-pub mod sphere_light;
 pub mod tonemap;
 pub mod triangle;
 
+use crate::math::sphere_light;
 use crate::scene::{Light, LightKind, Material};
 use glam::Vec3;
 

@@ -34,6 +34,7 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 
 pub mod depth;
 pub mod gaussian;
+pub mod sphere_light;
 
 /// Builds a matrix from its four rows, written as they appear on paper.
 /// glam stores columns, so this is `from_cols_array_2d(rows).transpose()`.

@@ -58,7 +58,7 @@ pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
                 l.outer_angle
             );
         }
-        lights.push(Light {
+        let light = Light {
             kind,
             position,
             direction,
@@ -74,7 +74,9 @@ pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
                 l.shadow.as_ref(),
                 kind == LightKind::Point,
             )?,
-        });
+        };
+        check_brightness(&light, &format!("lights[{i}]"))?;
+        lights.push(light);
     }
     let casting = |point: bool| {
         let same = |l: &&Light| (l.kind == LightKind::Point) == point;
@@ -95,6 +97,38 @@ pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
         lights.extend(generate_lights(g));
     }
     Ok(lights)
+}
+
+/// The brightest a light may be at its own surface: the most a half float
+/// holds. The HDR, light-accumulation and post targets are RGBA16F; a light
+/// past it would write inf there.
+pub const MAX_BRIGHTNESS: f64 = 65504.0;
+
+/// Refuse a light brighter than `MAX_BRIGHTNESS` at its surface (a point
+/// or spot light is a sphere of radius `LIGHT_RADIUS`, so even Kc = 0 has
+/// a brightest point), or whose colour x intensity overflows.
+fn check_brightness(l: &Light, key: &str) -> Result<()> {
+    let i = f64::from(l.color.max_element()) * f64::from(l.intensity);
+    let r = f64::from(crate::math::sphere_light::LIGHT_RADIUS);
+    let (kc, kl, kq) = (f64::from(l.kc), f64::from(l.kl), f64::from(l.kq));
+    let peak = match l.kind {
+        LightKind::Directional => i,
+        _ => i / (kc + kl * r + kq * r * r),
+    };
+    if peak.is_nan() || peak > MAX_BRIGHTNESS {
+        let at = match l.kind {
+            LightKind::Directional => String::new(),
+            _ => format!(
+                " at its surface (a sphere of radius {r}): I_max / (Kc + Kl r + Kq r^2) = \
+                 {i:e} / ({kc:e} + {kl:e} x {r} + {kq:e} x {r}^2)"
+            ),
+        };
+        bail!(
+            "{key}: the light is {peak:.3e}{at}, more than {MAX_BRIGHTNESS}, the most the \
+             RGBA16F light targets hold: lower its intensity or colour, or raise its attenuation"
+        );
+    }
+    Ok(())
 }
 
 /// Checks attenuation coefficients as the scene loader must before any light

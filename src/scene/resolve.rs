@@ -179,8 +179,18 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
     for n in names {
         let m = &f.materials[n];
         let key = |k: &str| format!("materials.{n}.{k}");
-        non_negative(&key("diffuse"), &m.diffuse)?;
-        non_negative(&key("specular"), &m.specular)?;
+        for (k, v) in [("diffuse", &m.diffuse), ("specular", &m.specular)] {
+            non_negative(&key(k), v)?;
+            // A surface reflects at most the light it gets, and the
+            // G-buffer stores its colours in 8 bits, 0..=1.
+            if v.iter().any(|x| *x > 1.0) {
+                bail!(
+                    "{}: expected reflectances in 0..=1 (a surface reflects at most the light \
+                     it gets; the G-buffer stores them in 8 bits), found {v:?}",
+                    key(k)
+                );
+            }
+        }
         if !(m.shininess.is_finite() && m.shininess >= 1.0 && m.shininess <= 4096.0) {
             bail!(
                 "{}: expected a number in 1..=4096, found {}",

@@ -23,6 +23,7 @@ mod deferred_lighting;
 mod deferred_shading;
 mod light_volumes;
 mod numeric_edges;
+mod numeric_sweep;
 mod stencil_light_volumes;
 
 use gloss::image_compare::Tolerance;

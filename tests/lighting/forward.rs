@@ -112,7 +112,7 @@ fn linear_attenuation_only_kq_zero() {
 #[test]
 fn a_light_on_the_plane_with_kc_0_is_a_small_sphere() {
     // N.L = 0 for a point on the plane; the light is a sphere of radius
-    // 0.01 (src/lighting/sphere_light.rs), half above the plane, and the
+    // 0.01 (src/math/sphere_light.rs), half above the plane, and the
     // CPU's Phong with the same sphere gives every pixel, the one under
     // the light (attenuation at d = 0.01, not 1/0) included.
     for (y, k) in [

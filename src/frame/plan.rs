@@ -10,7 +10,7 @@
 
 use crate::frame::lights::FrameLights;
 use crate::frame::post;
-use crate::frame::targets::TargetDesc;
+use crate::frame::targets::{TargetDesc, size_name};
 use crate::frame::technique::{FrameOrder, Runs, Stage, Technique};
 use crate::frame::views::View;
 use crate::math::depth::{DEPTH_BITS, precision_table};
@@ -239,8 +239,16 @@ impl std::fmt::Display for FramePlan {
         let (w, h) = self.size;
         writeln!(f, "render targets ({w}x{h}):")?;
         for t in &self.targets {
-            writeln!(f, "  {:<20} {}", t.name, t.attachments().join(", "))?;
+            let bytes = size_name(t.bytes(w, h));
+            writeln!(
+                f,
+                "  {:<20} {}  ({bytes})",
+                t.name,
+                t.attachments().join(", ")
+            )?;
         }
+        let total: u64 = self.targets.iter().map(|t| t.bytes(w, h)).sum();
+        writeln!(f, "  {:<20} {}", "in all", size_name(total))?;
         if self.views.len() > 1 {
             writeln!(f, "views:")?;
             for (i, v) in self.views.iter().enumerate() {

@@ -7,7 +7,7 @@
 use crate::gl::Gl;
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::mip_target::MipTarget;
-use crate::gl::texture::{Texture, max_level};
+use crate::gl::texture::{Texture, level_size, max_level};
 use anyhow::{Result, anyhow};
 use glow::HasContext;
 
@@ -68,6 +68,29 @@ impl TargetDesc {
         }
     }
 
+    /// The bytes its textures take at `width` x `height`: every colour
+    /// texture (both of a ping-pong pair), its own depth-stencil (a shared
+    /// one is counted where it is owned), every sample, and for a mip target
+    /// levels 0..=last (all are allocated; the levels below `first` are
+    /// never drawn). What the GL is asked for: a driver may pad it.
+    pub fn bytes(&self, width: u32, height: u32) -> u64 {
+        let pixels: u64 = match self.mips {
+            Some((_, last)) => (0..=last)
+                .map(|l| {
+                    let (w, h) = level_size(width as i32, height as i32, l);
+                    w as u64 * h as u64
+                })
+                .sum(),
+            None => u64::from(width) * u64::from(height),
+        };
+        let colors: u64 = self.colors.iter().map(|&(_, f)| bytes_per_pixel(f)).sum();
+        let depth = match self.depth {
+            Depth::Own(f) => bytes_per_pixel(f),
+            Depth::None | Depth::SharedWith(_) => 0,
+        };
+        pixels * (colors + depth) * u64::from(self.samples.max(1))
+    }
+
     /// Every attachment as "name:FORMAT", depth last.
     pub fn attachments(&self) -> Vec<String> {
         let mut v: Vec<String> = self
@@ -87,6 +110,26 @@ impl TargetDesc {
             v.push(format!("{} samples", self.samples));
         }
         v
+    }
+}
+
+/// The bytes a pixel of an internal format gloss uses takes.
+pub fn bytes_per_pixel(format: u32) -> u64 {
+    match format {
+        glow::RGBA16F => 8,
+        glow::RGBA32F => 16,
+        // RGBA8, SRGB8_ALPHA8, DEPTH24_STENCIL8, DEPTH_COMPONENT24 (padded
+        // to 32 bits), DEPTH_COMPONENT32F.
+        _ => 4,
+    }
+}
+
+/// "1.46 MiB", "900 KiB", "12 bytes".
+pub fn size_name(bytes: u64) -> String {
+    match bytes {
+        b if b >= 1 << 20 => format!("{:.2} MiB", b as f64 / f64::from(1 << 20)),
+        b if b >= 1 << 10 => format!("{:.0} KiB", b as f64 / 1024.0),
+        b => format!("{b} bytes"),
     }
 }
 
@@ -222,5 +265,58 @@ impl Targets {
 impl Drop for Targets {
     fn drop(&mut self) {
         self.clear();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn target(colors: Vec<(&'static str, u32)>, depth: Depth) -> TargetDesc {
+        TargetDesc {
+            name: "t",
+            samples: 1,
+            colors,
+            depth,
+            ping_pong: false,
+            mips: None,
+        }
+    }
+
+    #[test]
+    fn a_targets_bytes_are_its_textures() {
+        // The G-buffer: RGBA16F + two SRGB8_ALPHA8 + DEPTH24_STENCIL8, 20
+        // bytes a pixel.
+        let g = target(
+            vec![
+                ("normal_shininess", glow::RGBA16F),
+                ("albedo", glow::SRGB8_ALPHA8),
+                ("specular", glow::SRGB8_ALPHA8),
+            ],
+            Depth::Own(glow::DEPTH24_STENCIL8),
+        );
+        assert_eq!(g.bytes(320, 240), 20 * 320 * 240);
+        // A shared depth is counted once, where it is owned.
+        let shared = TargetDesc {
+            depth: Depth::SharedWith("gbuffer"),
+            ..target(vec![("light", glow::RGBA16F)], Depth::None)
+        };
+        assert_eq!(shared.bytes(320, 240), 8 * 320 * 240);
+        // Four samples take four times the bytes.
+        let msaa = TargetDesc {
+            samples: 4,
+            ..target(vec![("color", glow::RGBA8)], Depth::None)
+        };
+        assert_eq!(msaa.bytes(10, 10), 4 * 4 * 100);
+        // Mip levels 1..=2 of 10x6: levels 0, 1 and 2 are allocated
+        // (10x6, 5x3, 2x1).
+        let mips = TargetDesc {
+            mips: Some((1, 2)),
+            ..target(vec![("color", glow::RGBA16F)], Depth::None)
+        };
+        assert_eq!(mips.bytes(10, 6), 8 * (60 + 15 + 2));
+        assert_eq!(size_name(1536000), "1.46 MiB");
+        assert_eq!(size_name(2048), "2 KiB");
+        assert_eq!(size_name(12), "12 bytes");
     }
 }

@@ -4,6 +4,7 @@
 //! shaders, scene and docs page, and its scene runs it.
 
 use crate::common;
+use gloss::frame::targets::size_name;
 use gloss::scene::{RenderPath, Scene};
 use gloss::techniques::{ALL, plan};
 
@@ -82,6 +83,23 @@ fn frame_plan_lists_the_right_passes() {
     );
     assert!(text.contains("256 spheres"), "{text}");
     assert!(text.contains("light:RGBA16F"), "{text}");
+    // Each target's bytes, and the sum of them.
+    let scene = common::scene("many-lights.toml");
+    let p = plan(&with_path(&scene, RenderPath::Volumes));
+    let (w, h) = p.size;
+    let sum: u64 = p.targets.iter().map(|t| t.bytes(w, h)).sum();
+    let gbuffer = p.target("gbuffer").unwrap().bytes(w, h);
+    assert_eq!(gbuffer, 20 * u64::from(w) * u64::from(h));
+    let line = |name: &str| {
+        text.lines()
+            .find(|l| l.trim_start().starts_with(name))
+            .unwrap()
+    };
+    assert!(
+        line("gbuffer").ends_with(&format!("({})", size_name(gbuffer))),
+        "{text}"
+    );
+    assert!(line("in all").ends_with(&size_name(sum)), "{text}");
 }
 
 #[test]

@@ -5,7 +5,8 @@
 use super::billboards::{BillboardFieldFile, BillboardFile};
 use super::mirrors::MirrorFile;
 use super::settings::{
-    Accumulation, AlphaTest, BillboardMode, DepthFunc, MirrorOrder, RenderPath, Shading,
+    Accumulation, AlphaTest, BillboardMode, DeferredLights, DepthFunc, MirrorOrder, RenderPath,
+    Shading,
 };
 use serde::Deserialize;
 use std::collections::HashMap;
@@ -83,6 +84,7 @@ pub(super) struct RenderFile {
     pub(super) cutoff: f32,
     pub(super) stencil_volumes: bool,
     pub(super) accumulation: Accumulation,
+    pub(super) deferred_lights: DeferredLights,
     pub(super) mirror_order: MirrorOrder,
     /// How many mirrors deep reflections go (1: mirrors seen in a mirror are blank).
     pub(super) mirror_depth: u32,
@@ -110,6 +112,7 @@ impl Default for RenderFile {
             cutoff: 5.0 / 256.0,
             stencil_volumes: false,
             accumulation: Accumulation::Rgba16f,
+            deferred_lights: DeferredLights::PerLight,
             mirror_order: MirrorOrder::NormalFirst,
             mirror_depth: 1,
             mirror_clip: true,

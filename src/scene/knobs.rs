@@ -7,7 +7,8 @@
 
 use super::RenderSettings;
 use super::settings::{
-    Accumulation, BillboardMode, ChainForm, DepthFunc, MirrorOrder, RenderPath, Shading,
+    Accumulation, BillboardMode, ChainForm, DeferredLights, DepthFunc, MirrorOrder, RenderPath,
+    Shading,
 };
 use glam::Vec3;
 
@@ -151,6 +152,19 @@ pub static ACCUMULATION: Knob = Knob {
     set: |r, v| {
         if let Value::Choice(i) = v {
             r.accumulation = Accumulation::ALL[i];
+        }
+    },
+};
+
+pub static DEFERRED_LIGHTS: Knob = Knob {
+    key: "render.deferred_lights",
+    label: "deferred lights",
+    help: "the deferred path: a full-screen pass per light (notes 04), or one pass looping over all (notes 01 §8.6.2)",
+    kind: Kind::Choice(DeferredLights::WORDS),
+    get: |r| Value::Choice(index(DeferredLights::ALL, r.deferred_lights)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.deferred_lights = DeferredLights::ALL[i];
         }
     },
 };
@@ -313,6 +327,7 @@ pub static ALL: &[&Knob] = &[
     &CUTOFF,
     &STENCIL_VOLUMES,
     &ACCUMULATION,
+    &DEFERRED_LIGHTS,
     &AMBIENT,
     &BACKGROUND,
     &MIRROR_ORDER,

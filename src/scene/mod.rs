@@ -38,8 +38,8 @@ pub use file::LightGrid;
 pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
 pub use settings::{
-    Accumulation, AlphaTest, BillboardKind, BillboardMode, DepthFunc, MirrorOrder, RenderPath,
-    Shading,
+    Accumulation, AlphaTest, BillboardKind, BillboardMode, DeferredLights, DepthFunc, MirrorOrder,
+    RenderPath, Shading,
 };
 pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;
@@ -102,6 +102,8 @@ pub struct RenderSettings {
     pub stencil_volumes: bool,
     /// Internal format of the light accumulation target (RGBA16F or RGBA32F).
     pub accumulation: Accumulation,
+    /// The deferred path: a pass per light, or one pass over all of them.
+    pub deferred_lights: DeferredLights,
     /// Planar mirrors (notes 05): the order of their passes, how deep
     /// reflections recurse, the clip plane and the winding fix (toggles that
     /// show what goes wrong without them).

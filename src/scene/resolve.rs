@@ -125,6 +125,7 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         stencil_volumes: r.stencil_volumes,
         accumulation: r.accumulation,
+        deferred_lights: r.deferred_lights,
         mirror_order: r.mirror_order,
         mirror_depth: {
             if !(1..=MAX_MIRROR_DEPTH).contains(&r.mirror_depth) {

@@ -167,6 +167,18 @@ setting! {
     }
 }
 
+setting! {
+    /// How the full-screen deferred path loops over the lights.
+    pub enum DeferredLights {
+        /// One full-screen pass per light, added by blending (notes 04,
+        /// "our current deferred shader").
+        PerLight = "per_light",
+        /// One full-screen pass whose shader loops over every light (notes
+        /// 01 §8.6.2: "for every fragment: for every light").
+        SinglePass = "single_pass",
+    }
+}
+
 impl Accumulation {
     /// The texture's internal format.
     pub fn gl(self) -> u32 {

@@ -9,8 +9,8 @@
 //! default is what "no effect" looks like anyway, and "save as" writes it.
 
 use super::{
-    Accumulation, AlphaTest, BillboardMode, CubeRender, LightKind, MirrorOrder, Projection,
-    RenderPath, Scene, Shading, ShadowFit,
+    Accumulation, AlphaTest, BillboardMode, CubeRender, DeferredLights, LightKind, MirrorOrder,
+    Projection, RenderPath, Scene, Shading, ShadowFit,
 };
 
 impl Scene {
@@ -88,6 +88,14 @@ impl Scene {
             path == RenderPath::Forward && r.accumulation != Accumulation::Rgba16f,
             format!("\"{}\"", r.accumulation),
             &format!("{on_path}: it has no light accumulation target (the deferred paths have)"),
+        );
+        warn(
+            "deferred_lights",
+            path != RenderPath::Deferred && r.deferred_lights != DeferredLights::PerLight,
+            format!("\"{}\"", r.deferred_lights),
+            &format!(
+                "{on_path}: only the full-screen deferred path loops over the lights (the volumes and prepass paths draw a volume per light)"
+            ),
         );
         warn(
             "msaa",

@@ -7,15 +7,22 @@
 //!     for every light: calculate shading
 //! ```
 //!
-//! One full-screen triangle per light, added together with glBlendFunc(GL_ONE,
-//! GL_ONE) into a black HDR target (the light accumulation target, which
-//! this file describes for every deferred lighting pass); composite.rs then
-//! adds the ambient term and writes the final image. Each pixel is shaded
-//! once per light whether the light reaches it or not: light_volumes.rs
-//! removes that waste.
+//! Two forms, `render.deferred_lights`:
 //!
-//! GL state: no depth test, depth writes off, additive blending; restores
-//! depth writes and no blending.
+//! - `per_light` (notes 04): one full-screen triangle per light, added
+//!   together with glBlendFunc(GL_ONE, GL_ONE) into a black HDR target;
+//! - `single_pass` (notes 01 §8.6.2 as written): one full-screen triangle
+//!   whose shader loops over every light (glsl/deferred/deferred_shading_single_pass.frag),
+//!   no blending: the sum is made in f32 and written once, so the G-buffer
+//!   is read once a pixel, not once a light.
+//!
+//! Both write the light accumulation target, which this file describes for
+//! every deferred lighting pass; composite.rs then adds the ambient term and
+//! writes the final image. Each pixel is shaded for every light whether the
+//! light reaches it or not: light_volumes.rs removes that waste.
+//!
+//! GL state: no depth test, depth writes off, additive blending (per light);
+//! restores depth writes and no blending.
 
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
@@ -26,7 +33,7 @@ use crate::frame::uniforms::LIGHTS_BINDING;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
-use crate::scene::{RenderPath, Scene};
+use crate::scene::{DeferredLights, RenderPath, Scene};
 use anyhow::Result;
 use glam::Mat4;
 use glow::HasContext;
@@ -35,10 +42,14 @@ pub const DEFERRED_SHADING: Technique = Technique {
     name: "deferred_shading",
     notes: "notes 01 §8.6; notes 02, Deferred shading; notes 04, our current deferred shader",
     file: file!(),
-    shaders: &["common/fullscreen.vert", "deferred/deferred_shading.frag"],
+    shaders: &[
+        "common/fullscreen.vert",
+        "deferred/deferred_shading.frag",
+        "deferred/deferred_shading_single_pass.frag",
+    ],
     scene: "scenes/deferred-shading.toml",
     docs: "docs/deferred/deferred_shading.md",
-    knobs: &[&knobs::ACCUMULATION],
+    knobs: &[&knobs::ACCUMULATION, &knobs::DEFERRED_LIGHTS],
     passes,
     targets,
     create,
@@ -50,10 +61,16 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     if scene.render.path != RenderPath::Deferred || lights.is_empty() {
         return vec![];
     }
-    let draws = format!(
-        "{} full-screen triangles, one per light, additive",
-        lights.len()
-    );
+    let draws = match scene.render.deferred_lights {
+        DeferredLights::PerLight => format!(
+            "{} full-screen triangles, one per light, additive",
+            lights.len()
+        ),
+        DeferredLights::SinglePass => format!(
+            "1 full-screen triangle, its shader looping over {} lights",
+            lights.len()
+        ),
+    };
     vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())]
 }
 
@@ -82,6 +99,7 @@ pub fn accumulation_target(scene: &Scene, depth: Depth) -> TargetDesc {
 
 struct DeferredShading {
     program: Program,
+    single_pass: Program,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -91,13 +109,32 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     ])?;
     program.bind_uniform_block("Lights", LIGHTS_BINDING);
     shadows::setup_program(&program);
-    Ok(Box::new(DeferredShading { program }))
+    let single_pass = p.build(&[
+        (glow::VERTEX_SHADER, "common/fullscreen.vert"),
+        (
+            glow::FRAGMENT_SHADER,
+            "deferred/deferred_shading_single_pass.frag",
+        ),
+    ])?;
+    single_pass.bind_uniform_block("Lights", LIGHTS_BINDING);
+    shadows::setup_program(&single_pass);
+    Ok(Box::new(DeferredShading {
+        program,
+        single_pass,
+    }))
 }
 
 impl RunPasses for DeferredShading {
-    /// The lighting pass: one full-screen triangle per light, additive.
+    /// The lighting pass: one full-screen triangle per light, additive, or
+    /// one for all the lights.
     fn run(&self, _: &Pass, f: &Frame) {
-        let (gl, p, u) = (f.gl, &self.program, f.uniforms);
+        let single = f.scene.render.deferred_lights == DeferredLights::SinglePass;
+        let p = if single {
+            &self.single_pass
+        } else {
+            &self.program
+        };
+        let (gl, u) = (f.gl, f.uniforms);
         let target = f.targets.get(LIGHT_ACCUMULATION);
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
@@ -108,17 +145,24 @@ impl RunPasses for DeferredShading {
             gl.clear(glow::COLOR_BUFFER_BIT);
             gl.disable(glow::DEPTH_TEST);
             gl.depth_mask(false);
-            gl.enable(glow::BLEND);
-            gl.blend_func(glow::ONE, glow::ONE);
+            if !single {
+                gl.enable(glow::BLEND);
+                gl.blend_func(glow::ONE, glow::ONE);
+            }
 
             p.use_program();
             gbuffer::bind_for_reading(gl, p, f.targets.get(gbuffer::NAME), u);
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             f.shadows.bind(gl);
-            for i in 0..u.light_count {
-                p.set_i32("u_light_id", i);
+            if single {
+                p.set_i32("u_light_count", u.light_count);
                 f.meshes.fullscreen.draw();
+            } else {
+                for i in 0..u.light_count {
+                    p.set_i32("u_light_id", i);
+                    f.meshes.fullscreen.draw();
+                }
             }
 
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);

@@ -111,7 +111,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
                     cutoff: None,
                     stencil: false,
                 }),
-                RenderPath::Volumes | RenderPath::Prepass => {
+                RenderPath::Volumes | RenderPath::Prepass | RenderPath::Tiled => {
                     for &c in &cutoffs {
                         settings.push(Setting {
                             path: p,

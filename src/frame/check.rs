@@ -7,7 +7,10 @@
 //! words, for the plan to print.
 
 use crate::frame::billboards::load_sprites;
-use crate::frame::lights::{LIGHTS_ON_EVERY_GL, MAX_LIGHTS, check_light_count};
+use crate::frame::lights::{
+    BUFFER_LIGHTS_ON_EVERY_GL, LIGHTS_ON_EVERY_GL, MAX_LIGHTS, check_lights_fit,
+    lights_in_buffer_texture,
+};
 use crate::frame::multisample;
 use crate::gl::texture::load_rgba8;
 use crate::scene::meshes::mesh_data;
@@ -19,10 +22,12 @@ use std::path::PathBuf;
 /// Check `scene` as far as the CPU can; returns what it could not check
 /// (each a phrase: "GL_MAX_SAMPLES for render.msaa = 8").
 pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
-    check_light_count(
+    check_lights_fit(
         scene,
         MAX_LIGHTS,
         &format!("gloss's limit on any GL; every GL 3.3 holds {LIGHTS_ON_EVERY_GL}"),
+        // Mesa and the desktop drivers hold 2^27 texels; the renderer checks its own GL.
+        1 << 27,
     )?;
     // The draw list's order: each object's mesh, its material's texture,
     // its mirror's roughness texture; each file once.
@@ -60,7 +65,14 @@ pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
     if samples > 1 {
         unchecked.push(format!("GL_MAX_SAMPLES for render.msaa = {samples}"));
     }
-    if scene.lights.len() > LIGHTS_ON_EVERY_GL {
+    if lights_in_buffer_texture(scene) {
+        if scene.lights.len() > BUFFER_LIGHTS_ON_EVERY_GL {
+            unchecked.push(format!(
+                "GL_MAX_TEXTURE_BUFFER_SIZE for {} lights (every GL 3.3 holds {BUFFER_LIGHTS_ON_EVERY_GL})",
+                scene.lights.len()
+            ));
+        }
+    } else if scene.lights.len() > LIGHTS_ON_EVERY_GL {
         unchecked.push(format!(
             "GL_MAX_UNIFORM_BLOCK_SIZE for {} lights (every GL 3.3 holds {LIGHTS_ON_EVERY_GL})",
             scene.lights.len()

@@ -9,7 +9,7 @@
 //! read the same radius from the uniform block.
 
 use crate::lighting::attenuation;
-use crate::scene::{Light, LightKind, Scene};
+use crate::scene::{Light, LightKind, RenderPath, Scene};
 use glam::{Mat4, Quat, Vec3, Vec4};
 
 /// Bytes per light in the std140 `Lights` block (four vec4).
@@ -36,6 +36,63 @@ pub fn check_light_count(scene: &Scene, max: usize, why: &str) -> anyhow::Result
             "{}: {} lights, but at most {max} fit in the lights uniform block ({why})",
             scene.path.display(),
             scene.lights.len()
+        );
+    }
+    Ok(())
+}
+
+/// The lights a buffer texture holds on every GL 3.3
+/// (GL_MAX_TEXTURE_BUFFER_SIZE >= 65536 texels, four a light).
+pub const BUFFER_LIGHTS_ON_EVERY_GL: usize = 65536 / 4;
+
+/// The most lights the tiled path shades: one pixel's list is one loop of
+/// glsl/deferred/tiled_shading.frag, and llvmpipe ends a loop after 65535
+/// iterations (silently: the rest of the list goes unshaded).
+pub const TILED_LOOP_LIGHTS: usize = 65535;
+
+/// Whether every pass of `scene`'s frame reads the lights from a buffer
+/// texture rather than the uniform block: the tiled path, with no
+/// transparent object (those are lit forward, from the block).
+pub fn lights_in_buffer_texture(scene: &Scene) -> bool {
+    scene.render.path == RenderPath::Tiled && scene.opaque_objects() == scene.objects.len()
+}
+
+/// `check_light_count`, where a tiled frame may hold more: refuse a scene
+/// with more lights than its frame reads. `block_max` lights fit in the
+/// uniform block (`block_why` says why), `texels` texels in a buffer
+/// texture (four a light). With more lights than the block holds, only the
+/// first `block_max` may cast shadows (the `Shadows` block's table).
+pub fn check_lights_fit(
+    scene: &Scene,
+    block_max: usize,
+    block_why: &str,
+    texels: usize,
+) -> anyhow::Result<()> {
+    if !lights_in_buffer_texture(scene) {
+        return check_light_count(scene, block_max, block_why);
+    }
+    let n = scene.lights.len();
+    if n > texels / 4 {
+        anyhow::bail!(
+            "{}: {n} lights, but at most {} fit in the tiled path's light buffer texture (GL_MAX_TEXTURE_BUFFER_SIZE = {texels} texels, 4 a light)",
+            scene.path.display(),
+            texels / 4
+        );
+    }
+    if n > TILED_LOOP_LIGHTS {
+        anyhow::bail!(
+            "{}: {n} lights, but the tiled path shades at most {TILED_LOOP_LIGHTS}: a pixel's list is one shader loop, and llvmpipe runs a loop at most 65535 times",
+            scene.path.display()
+        );
+    }
+    if let Some(i) = (scene.lights.iter().enumerate())
+        .skip(block_max)
+        .find(|(_, l)| l.shadow.is_some())
+        .map(|(i, _)| i)
+    {
+        anyhow::bail!(
+            "{}: light {i} casts a shadow, but only the first {block_max} lights can ({block_why}): list the casting lights first",
+            scene.path.display()
         );
     }
     Ok(())

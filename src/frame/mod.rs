@@ -14,11 +14,14 @@
 //! - `timing`: pass times around glFinish.
 //! - `post`: the post chain's steps, what each reads and writes.
 //! - `views`: the camera's view and the reflected views mirrors add.
+//! - `clusters`: tiled shading's light binning on the CPU: each light's
+//!   bounding sphere into screen tiles and depth slices (no GL).
 //! - `check`: what `gloss plan` checks without a GL context (the files the
 //!   renderer loads, the light count), with the renderer's own functions.
 
 pub mod billboards;
 pub mod check;
+pub mod clusters;
 pub mod draw_list;
 pub mod gbuffer;
 pub mod lights;

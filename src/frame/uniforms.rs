@@ -9,6 +9,9 @@ pub struct FrameUniforms {
     pub view_projection: Mat4,
     pub inverse_view_projection: Mat4,
     pub eye: Vec3,
+    /// The camera's near and far planes (eye-space distances).
+    pub near: f32,
+    pub far: f32,
     pub light_count: i32,
     pub lights_ubo: glow::Buffer,
     /// The world's target holds sRGB-encoded values (the 8-bit output, with
@@ -41,6 +44,12 @@ pub mod unit {
     pub const LIGHT: u32 = 4;
     /// The light pre-pass's specular light (`u_specular_light`).
     pub const SPECULAR_LIGHT: u32 = 5;
+    /// Tiled shading's buffer textures (glsl/deferred/tiled_shading.frag):
+    /// the lights, each cluster's (offset, count), the light numbers. Units
+    /// 6-13 hold the shadow maps (src/frame/shadows.rs).
+    pub const TILED_LIGHTS: u32 = 4;
+    pub const TILED_CLUSTERS: u32 = 5;
+    pub const TILED_INDICES: u32 = 14;
     /// A post-chain step reads the previous image (`u_image`).
     pub const POST_INPUT: u32 = 0;
 }

@@ -8,7 +8,7 @@ mod output;
 pub use output::{Output, stencil_color, stencil_image};
 
 use crate::frame::draw_list::DrawList;
-use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_light_count, max_lights};
+use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_lights_fit, max_lights};
 use crate::frame::meshes::FrameMeshes;
 use crate::frame::multisample;
 use crate::frame::plan::{FramePlan, Pass};
@@ -23,6 +23,7 @@ use crate::gl::buffer::Buffer;
 use crate::gl::debug::DebugLog;
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Sources;
+use crate::gl::texture_buffer::max_texels;
 use crate::gl::{Gl, Headless};
 use crate::lighting;
 use crate::scene::{Camera, RenderSettings, Scene};
@@ -81,12 +82,13 @@ impl Renderer {
     ) -> Result<Renderer> {
         let max_block = unsafe { gl.get_parameter_i32(glow::MAX_UNIFORM_BLOCK_SIZE) };
         let max_lights = max_lights(max_block);
-        check_light_count(
+        check_lights_fit(
             scene,
             max_lights,
             &format!(
                 "GL_MAX_UNIFORM_BLOCK_SIZE = {max_block} bytes on this GL, {LIGHT_STRIDE} a light, at most {MAX_LIGHTS}"
             ),
+            max_texels(gl),
         )?;
         let lights = FrameLights::new(scene);
         let plan = FramePlan::new(scene, &lights, techniques::ALL);
@@ -160,10 +162,11 @@ impl Renderer {
     /// uploaded. On an error the renderer
     /// keeps what it had.
     pub fn set_scene_values(&mut self, scene: &Scene) -> Result<()> {
-        check_light_count(
+        check_lights_fit(
             scene,
             self.max_lights,
             "this GL's GL_MAX_UNIFORM_BLOCK_SIZE",
+            max_texels(&self.gl),
         )?;
         let old = std::mem::replace(&mut self.scene, scene.clone());
         let lights = FrameLights::new(&self.scene);
@@ -211,11 +214,13 @@ impl Renderer {
         &self.meshes
     }
 
-    /// Write the scene's lights into the uniform buffer.
+    /// Write the scene's lights into the uniform buffer (as many as it
+    /// holds: a tiled frame with more reads them from a buffer texture).
     fn upload_lights(&mut self) {
         let bytes = self.lights.pack(&self.scene);
-        if !bytes.is_empty() {
-            self.lights_ubo.write(&bytes);
+        let n = bytes.len().min(self.max_lights * LIGHT_STRIDE);
+        if n > 0 {
+            self.lights_ubo.write(&bytes[..n]);
         }
     }
 
@@ -271,7 +276,9 @@ impl Renderer {
             view_projection: vp,
             inverse_view_projection: vp.inverse(),
             eye: r.inverse().transform_point3(camera.eye),
-            light_count: self.scene.lights.len() as i32,
+            near: camera.near,
+            far: camera.far,
+            light_count: self.scene.lights.len().min(self.max_lights) as i32,
             lights_ubo: self.lights_ubo.id,
             output_srgb: srgb,
             output_encoded: encoded,

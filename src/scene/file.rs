@@ -85,6 +85,8 @@ pub(super) struct RenderFile {
     pub(super) stencil_volumes: bool,
     pub(super) accumulation: Accumulation,
     pub(super) deferred_lights: DeferredLights,
+    pub(super) tile_size: u32,
+    pub(super) depth_slices: u32,
     pub(super) mirror_order: MirrorOrder,
     /// How many mirrors deep reflections go (1: mirrors seen in a mirror are blank).
     pub(super) mirror_depth: u32,
@@ -113,6 +115,8 @@ impl Default for RenderFile {
             stencil_volumes: false,
             accumulation: Accumulation::Rgba16f,
             deferred_lights: DeferredLights::PerLight,
+            tile_size: 16,
+            depth_slices: 16,
             mirror_order: MirrorOrder::NormalFirst,
             mirror_depth: 1,
             mirror_clip: true,

@@ -77,7 +77,7 @@ impl Knob {
 pub static PATH: Knob = Knob {
     key: "render.path",
     label: "lighting path",
-    help: "forward, deferred (a full-screen pass per light), volumes (notes 04), prepass (notes 02)",
+    help: "forward, deferred (a full-screen pass per light), volumes (notes 04), prepass (notes 02), tiled (lights binned per screen tile and depth slice)",
     kind: Kind::Choice(RenderPath::WORDS),
     get: |r| Value::Choice(index(RenderPath::ALL, r.path)),
     set: |r, v| {
@@ -165,6 +165,38 @@ pub static DEFERRED_LIGHTS: Knob = Knob {
     set: |r, v| {
         if let Value::Choice(i) = v {
             r.deferred_lights = DeferredLights::ALL[i];
+        }
+    },
+};
+
+pub static TILE_SIZE: Knob = Knob {
+    key: "render.tile_size",
+    label: "tile size",
+    help: "tiled shading: the screen tile's edge in pixels (lights are binned per tile on the CPU)",
+    kind: Kind::Count {
+        min: *super::resolve::TILE_SIZES.start(),
+        max: *super::resolve::TILE_SIZES.end(),
+    },
+    get: |r| Value::Count(r.tile_size),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.tile_size = n;
+        }
+    },
+};
+
+pub static DEPTH_SLICES: Knob = Knob {
+    key: "render.depth_slices",
+    label: "depth slices",
+    help: "tiled shading: depth slices between near and far, spaced exponentially (1: tiles only; more: clustered)",
+    kind: Kind::Count {
+        min: *super::resolve::DEPTH_SLICES.start(),
+        max: *super::resolve::DEPTH_SLICES.end(),
+    },
+    get: |r| Value::Count(r.depth_slices),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.depth_slices = n;
         }
     },
 };
@@ -328,6 +360,8 @@ pub static ALL: &[&Knob] = &[
     &STENCIL_VOLUMES,
     &ACCUMULATION,
     &DEFERRED_LIGHTS,
+    &TILE_SIZE,
+    &DEPTH_SLICES,
     &AMBIENT,
     &BACKGROUND,
     &MIRROR_ORDER,

@@ -104,6 +104,10 @@ pub struct RenderSettings {
     pub accumulation: Accumulation,
     /// The deferred path: a pass per light, or one pass over all of them.
     pub deferred_lights: DeferredLights,
+    /// Tiled shading: the screen tile's edge in pixels, and how many depth
+    /// slices cut the view (1: tiles only; more: clustered shading).
+    pub tile_size: u32,
+    pub depth_slices: u32,
     /// Planar mirrors (notes 05): the order of their passes, how deep
     /// reflections recurse, the clip plane and the winding fix (toggles that
     /// show what goes wrong without them).

@@ -30,6 +30,11 @@ pub(super) fn non_negative(key: &str, v: &[f32]) -> Result<()> {
 /// pass over the world, and the stencil buffer's 8 bits count the levels.
 pub const MAX_MIRROR_DEPTH: u32 = 8;
 
+/// The tile edges `render.tile_size` takes, in pixels.
+pub const TILE_SIZES: std::ops::RangeInclusive<u32> = 4..=256;
+/// The depth slices `render.depth_slices` takes (1: tiled, no slicing).
+pub const DEPTH_SLICES: std::ops::RangeInclusive<u32> = 1..=64;
+
 /// The sample counts `render.msaa` takes.
 pub const MSAA_SAMPLES: [u32; 4] = [1, 2, 4, 8];
 
@@ -126,6 +131,28 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         stencil_volumes: r.stencil_volumes,
         accumulation: r.accumulation,
         deferred_lights: r.deferred_lights,
+        tile_size: {
+            if !(TILE_SIZES).contains(&r.tile_size) {
+                bail!(
+                    "render.tile_size: expected a tile edge of {}..={} pixels, found {}",
+                    TILE_SIZES.start(),
+                    TILE_SIZES.end(),
+                    r.tile_size
+                );
+            }
+            r.tile_size
+        },
+        depth_slices: {
+            if !(DEPTH_SLICES).contains(&r.depth_slices) {
+                bail!(
+                    "render.depth_slices: expected {}..={} depth slices (1: tiles only), found {}",
+                    DEPTH_SLICES.start(),
+                    DEPTH_SLICES.end(),
+                    r.depth_slices
+                );
+            }
+            r.depth_slices
+        },
         mirror_order: r.mirror_order,
         mirror_depth: {
             if !(1..=MAX_MIRROR_DEPTH).contains(&r.mirror_depth) {

@@ -69,6 +69,10 @@ setting! {
         Volumes = "volumes",
         /// Deferred lighting / light pre-pass (notes 02): diffuse and specular accumulated apart.
         Prepass = "prepass",
+        /// G-buffer, lights binned into screen tiles and depth slices on the
+        /// CPU, then one full-screen pass shading each pixel with its
+        /// cluster's lights (Persson 2015), then composite.
+        Tiled = "tiled",
     }
 }
 

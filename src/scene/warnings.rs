@@ -72,7 +72,7 @@ impl Scene {
             matches!(path, RenderPath::Forward | RenderPath::Deferred) && r.cutoff != 5.0 / 256.0,
             r.cutoff.to_string(),
             &format!(
-                "{on_path}: only light volumes (the volumes and prepass paths) end where a light falls to it"
+                "{on_path}: only light volumes (the volumes, prepass and tiled paths) end where a light falls to it"
             ),
         );
         warn(
@@ -97,6 +97,21 @@ impl Scene {
                 "{on_path}: only the full-screen deferred path loops over the lights (the volumes and prepass paths draw a volume per light)"
             ),
         );
+        for (key, set, value) in [
+            ("tile_size", r.tile_size != 16, r.tile_size.to_string()),
+            (
+                "depth_slices",
+                r.depth_slices != 16,
+                r.depth_slices.to_string(),
+            ),
+        ] {
+            warn(
+                key,
+                path != RenderPath::Tiled && set,
+                value,
+                &format!("{on_path}: only the tiled path bins lights into tiles and slices"),
+            );
+        }
         warn(
             "msaa",
             path != RenderPath::Forward && r.msaa > 1,

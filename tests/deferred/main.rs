@@ -13,6 +13,10 @@
 //!   with a tiny cutoff, within 1/255.
 //! * camera inside a light volume; spot cones cover their lit region; the
 //!   stencil volume test gives the same image; `gloss plan` lists the passes.
+//! * tiled shading == light volumes at the same cutoff, for every tile size
+//!   and slice count (both summed in RGBA32F: within 1/255); with a tiny
+//!   cutoff, == forward within the deferred bound; 10,000 lights == the sum
+//!   of their parts.
 //!
 //! Every render runs with GL debug output on and fails on any GL error.
 
@@ -25,6 +29,7 @@ mod light_volumes;
 mod numeric_edges;
 mod numeric_sweep;
 mod stencil_light_volumes;
+mod tiled_shading;
 
 use gloss::image_compare::Tolerance;
 use gloss::scene::{RenderPath, Scene};

@@ -114,3 +114,48 @@ fn plan_names_what_it_cannot_check_without_gl() {
         ],
     );
 }
+
+#[test]
+fn the_tiled_path_holds_more_lights_than_the_block_but_not_without_limit() {
+    let dir = temp_dir("plan_tiled_lights");
+    let grid = |count: u32| {
+        format!(
+            "{BASE}\n[light_grid]\ncount = {count}\narea = [-5.0, 5.0, -5.0, 5.0]\nheight = [0.5, 2.0]\n"
+        )
+        .replace("size = [32, 24]", "size = [32, 24]\npath = \"tiled\"")
+    };
+    // 1025 lights: the tiled path reads them from a buffer texture.
+    let scene = write(&dir, "many.toml", grid(1024));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([
+            os("render"),
+            scene.as_os_str(),
+            os("-o"),
+            dir.join("many.png").as_os_str(),
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // With a transparent object, lit forward from the block, it cannot.
+    let glass = grid(1024).replace(
+        "[materials.floor]",
+        "[materials.glass]\ndiffuse = [0.5, 0.5, 0.5]\nopacity = 0.5\n\n[[objects]]\nname = \"pane\"\nmesh = \"cube\"\nmaterial = \"glass\"\n\n[materials.floor]",
+    );
+    let scene = write(&dir, "glass.toml", &glass);
+    let render = render_fails(&scene, &dir.join("glass.png"));
+    let plan = cli_fails(&[os("plan"), scene.as_os_str()]);
+    let same = "glass.toml: 1025 lights, but at most 1024 fit in the lights uniform block";
+    contains_all(&render, &[same]);
+    contains_all(&plan, &[same]);
+    // Past one shader loop's 65535 iterations: refused by plan and render alike.
+    let scene = write(&dir, "huge.toml", grid(70_000));
+    let render = render_fails(&scene, &dir.join("huge.png"));
+    let plan = cli_fails(&[os("plan"), scene.as_os_str()]);
+    let same = "huge.toml: 70001 lights, but the tiled path shades at most 65535";
+    contains_all(&render, &[same, "llvmpipe"]);
+    contains_all(&plan, &[same]);
+}

@@ -46,7 +46,7 @@ pub const COMPOSITE: Technique = Technique {
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     match scene.render.path {
-        RenderPath::Deferred | RenderPath::Volumes => vec![Pass::new(
+        RenderPath::Deferred | RenderPath::Volumes | RenderPath::Tiled => vec![Pass::new(
             "composite",
             world_target(scene),
             if scene.post.is_empty() {

@@ -41,7 +41,7 @@ pub const GBUFFER: Technique = Technique {
 fn layout(scene: &Scene) -> Option<bool> {
     match scene.render.path {
         RenderPath::Forward => None,
-        RenderPath::Deferred | RenderPath::Volumes => Some(false),
+        RenderPath::Deferred | RenderPath::Volumes | RenderPath::Tiled => Some(false),
         RenderPath::Prepass => Some(true),
     }
 }

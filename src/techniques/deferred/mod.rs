@@ -1,6 +1,7 @@
 //! Deferred rendering (notes 01 §8.6, notes 02, notes 04): the G-buffer,
 //! lighting with a full-screen pass per light or with light volumes (plain
-//! or stencil-tested), the composite pass, and deferred lighting (the light
+//! or stencil-tested) or with lights binned per screen tile (tiled shading),
+//! the composite pass, and deferred lighting (the light
 //! pre-pass).
 //!
 //! | path     | 1. fill G-buffer | 2. lighting                            | 3. final image       |
@@ -8,6 +9,7 @@
 //! | deferred | gbuffer.rs       | deferred_shading.rs (full screen)      | composite.rs         |
 //! | volumes  | gbuffer.rs       | light_volumes.rs / stencil_light_volumes.rs | composite.rs    |
 //! | prepass  | gbuffer.rs, thin | deferred_lighting.rs (volumes)         | deferred_lighting.rs |
+//! | tiled    | gbuffer.rs       | tiled_shading.rs (lights binned per tile) | composite.rs      |
 
 pub mod composite;
 pub mod deferred_lighting;
@@ -15,3 +17,4 @@ pub mod deferred_shading;
 pub mod gbuffer;
 pub mod light_volumes;
 pub mod stencil_light_volumes;
+pub mod tiled_shading;

@@ -1,0 +1,71 @@
+#version 330 core
+// Tiled / clustered deferred shading (src/techniques/deferred/tiled_shading.rs):
+// one full-screen pass; each pixel shades the lights with no radius and
+// then the lights binned into its cluster (its screen tile, its depth
+// slice) on the CPU (src/frame/clusters.rs). The sum is made here, in
+// f32, and written once.
+#include "common/lighting.glsl"
+#include "common/shadow.glsl"
+#include "common/gbuffer_read.glsl"
+uniform samplerBuffer u_light_data;    // 4 RGBA32F texels a light: the std140 Light
+uniform usamplerBuffer u_clusters;     // RG32UI, per cluster: offset and count in u_light_index
+uniform usamplerBuffer u_light_index;  // R32UI light numbers; the first u_global_count are every pixel's
+uniform int u_global_count;
+uniform int u_casters[8];              // the shadow casters' light numbers (4 maps + 4 cubes)
+uniform int u_caster_count;
+uniform ivec3 u_grid;                  // tiles across, tiles up, depth slices
+uniform int u_tile_size;               // pixels
+uniform vec2 u_slice_scale_bias;       // slice = floor(ln(depth) * scale + bias)
+uniform mat4 u_view;                   // world to eye space (depth = -z)
+uniform vec3 u_eye;
+out vec4 light_out;
+
+Light light_at(int i) {
+    Light l;
+    l.position_type = texelFetch(u_light_data, 4 * i);
+    l.direction_radius = texelFetch(u_light_data, 4 * i + 1);
+    l.color_cos_outer = texelFetch(u_light_data, 4 * i + 2);
+    l.atten_cos_inner = texelFetch(u_light_data, 4 * i + 3);
+    return l;
+}
+
+// Light i at the surface, as the light-volume shader shades it: nothing
+// beyond the light's radius (a listed light may not reach every pixel of
+// its cluster: the binning is conservative).
+vec3 shade(int i, Surface s, vec3 V) {
+    Light light = light_at(i);
+    float radius = light.direction_radius.w;
+    if (radius >= 0.0 && distance(s.P, light.position_type.xyz) > radius) return vec3(0.0);
+    return phong(light, s.P, s.N, V, s.kd, s.ks, s.shininess);
+}
+
+void main() {
+    vec2 uv = gbuffer_uv();
+    Surface s = read_gbuffer(uv);
+    if (s.depth == 1.0) discard;   // background: no surface here
+    vec3 V = normalize(u_eye - s.P);
+    vec3 sum = vec3(0.0);
+    // The shadow casters (at most eight), with shadow mapping's second pass
+    // (notes 01 §8.5). Only this loop calls shadow_visibility: its filter
+    // loops, run for every light of a long cluster list, would count
+    // towards llvmpipe's 65535 loop iterations per shader invocation
+    // (nested loops share the count) and cut the list short.
+    for (int k = 0; k < u_caster_count; ++k) {
+        int i = u_casters[k];
+        sum += shadow_visibility(i, s.P, s.N) * shade(i, s, V);
+    }
+    // The global list: the lights with no radius.
+    for (int k = 0; k < u_global_count; ++k)
+        sum += shade(int(texelFetch(u_light_index, k).r), s, V);
+
+    // This pixel's cluster: its tile, and its slice from its eye-space depth.
+    ivec2 tile = min(ivec2(gl_FragCoord.xy - u_viewport.xy) / u_tile_size, u_grid.xy - 1);
+    float depth = -(u_view * vec4(s.P, 1.0)).z;
+    float slice_f = floor(log(max(depth, 1e-30)) * u_slice_scale_bias.x + u_slice_scale_bias.y);
+    int slice = int(clamp(slice_f, 0.0, float(u_grid.z - 1)));
+    int cluster = (slice * u_grid.y + tile.y) * u_grid.x + tile.x;
+    uvec2 list = texelFetch(u_clusters, cluster).rg;
+    for (uint k = 0u; k < list.y; ++k)
+        sum += shade(int(texelFetch(u_light_index, int(list.x + k)).r), s, V);
+    light_out = vec4(sum, 1.0);
+}

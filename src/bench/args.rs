@@ -8,19 +8,20 @@ use std::path::PathBuf;
 pub struct BenchArgs {
     /// The scene to measure (default scenes/many-lights.toml).
     pub scene: Option<PathBuf>,
-    /// Render paths, comma-separated.
+    /// Render paths, comma-separated (deferred runs both its forms: a pass
+    /// per light, and one pass over all the lights).
     #[arg(
         long,
         value_delimiter = ',',
         value_enum,
-        default_value = "forward,deferred,volumes,prepass"
+        default_value = "forward,deferred,volumes,prepass,tiled"
     )]
     pub paths: Vec<RenderPath>,
     /// Light counts (scenes with a [light_grid]); default: the scene's own.
     #[arg(long, value_delimiter = ',')]
     pub lights: Vec<usize>,
     /// Light-volume cutoffs to sweep for the paths that use one (volumes,
-    /// prepass); default: the scene's (5/256). Fractions like 5/256 are accepted.
+    /// prepass, tiled); default: the scene's (5/256). Fractions like 5/256 are accepted.
     #[arg(long, value_delimiter = ',', value_parser = parse_fraction)]
     pub cutoffs: Vec<f32>,
     /// Also measure light volumes with the two-sided stencil test.

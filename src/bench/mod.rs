@@ -52,11 +52,17 @@ struct Setting {
     lights: usize,
     cutoff: Option<f32>,
     stencil: bool,
+    /// The deferred path as one pass over all the lights (notes 01 §8.6.2)
+    /// rather than a pass per light (notes 04).
+    single_pass: bool,
 }
 
 impl Setting {
     fn label(&self) -> String {
         let mut s = self.path.name().to_string();
+        if self.single_pass {
+            s.push_str(" single pass");
+        }
         if self.stencil {
             s.push_str("+stencil");
         }
@@ -105,12 +111,26 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     for &n in &light_counts {
         for &p in &args.paths {
             match p {
-                RenderPath::Forward | RenderPath::Deferred => settings.push(Setting {
+                RenderPath::Forward => settings.push(Setting {
                     path: p,
                     lights: n,
                     cutoff: None,
                     stencil: false,
+                    single_pass: false,
                 }),
+                // Both forms of full-screen deferred: notes 04's pass per
+                // light and notes 01 §8.6.2's one pass.
+                RenderPath::Deferred => {
+                    for single_pass in [false, true] {
+                        settings.push(Setting {
+                            path: p,
+                            lights: n,
+                            cutoff: None,
+                            stencil: false,
+                            single_pass,
+                        });
+                    }
+                }
                 RenderPath::Volumes | RenderPath::Prepass | RenderPath::Tiled => {
                     for &c in &cutoffs {
                         settings.push(Setting {
@@ -118,6 +138,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
                             lights: n,
                             cutoff: Some(c),
                             stencil: false,
+                            single_pass: false,
                         });
                         if args.stencil && p == RenderPath::Volumes {
                             settings.push(Setting {
@@ -125,6 +146,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
                                 lights: n,
                                 cutoff: Some(c),
                                 stencil: true,
+                                single_pass: false,
                             });
                         }
                     }
@@ -161,6 +183,9 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         scene.render.size = (w, h);
         scene.render.path = s.path;
         scene.render.stencil_volumes = s.stencil;
+        if s.single_pass {
+            scene.render.deferred_lights = crate::scene::DeferredLights::SinglePass;
+        }
         if let Some(c) = s.cutoff {
             scene.render.cutoff = c;
         }
@@ -190,6 +215,8 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
             // The plot draws one series per path; the stencil variant is its own.
             path: if s.stencil {
                 format!("{}+stencil", s.path.name())
+            } else if s.single_pass {
+                format!("{}+single", s.path.name())
             } else {
                 s.path.name().to_string()
             },

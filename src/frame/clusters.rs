@@ -244,7 +244,9 @@ fn footprints(
         } else {
             0.0
         };
-        let r = (radius * radius - gap * gap).max(0.0).sqrt() * (1.0 + 1e-4);
+        // (r - gap)(r + gap), not r^2 - gap^2: r^2 overflows f32 past 1.8e19
+        // (a tiny cutoff gives such radii).
+        let r = ((radius - gap) * (radius + gap)).max(0.0).sqrt() * (1.0 + 1e-4);
         let Some((x, y)) = tiles_of_box(grid, projection, size, c, r, z0, z1) else {
             continue;
         };
@@ -263,6 +265,7 @@ fn tiles_of_box(
     z0: f32,
     z1: f32,
 ) -> Option<((u32, u32), (u32, u32))> {
+    let all = ((0, grid.tiles.0 - 1), (0, grid.tiles.1 - 1));
     let (mut min, mut max) = (
         glam::Vec2::splat(f32::INFINITY),
         glam::Vec2::splat(f32::NEG_INFINITY),
@@ -274,6 +277,11 @@ fn tiles_of_box(
         let clip = projection * Vec4::new(x, y, z, 1.0);
         // In front of the near plane w > 0 (perspective) or w = 1 (orthographic).
         let ndc = clip.truncate().truncate() / clip.w.max(f32::MIN_POSITIVE);
+        if !ndc.is_finite() {
+            // A box too large for f32 (inf * 0 in the projection): it
+            // covers the view, so every tile, conservatively.
+            return Some(all);
+        }
         min = min.min(ndc);
         max = max.max(ndc);
     }
@@ -282,8 +290,8 @@ fn tiles_of_box(
     let px = |n: f32, extent: f32| (n * 0.5 + 0.5) * extent;
     let (x0, x1) = (px(min.x, w) - 1.0, px(max.x, w) + 1.0);
     let (y0, y1) = (px(min.y, h) - 1.0, px(max.y, h) + 1.0);
-    if !(x1 >= 0.0 && y1 >= 0.0 && x0 <= w && y0 <= h) {
-        return None; // off screen (or NaN)
+    if x1 < 0.0 || y1 < 0.0 || x0 > w || y0 > h {
+        return None; // off screen
     }
     let t = grid.tile_size as f32;
     let tile = |p: f32, n: u32| ((p / t).floor().max(0.0) as u32).min(n - 1);

@@ -144,6 +144,8 @@ fn hard_cases_stay_conservative() {
         // Tiny and huge.
         Bound::Sphere(Vec3::new(1.0, 0.0, 0.0), 1e-4),
         Bound::Sphere(Vec3::new(0.0, 0.0, -5.0), 500.0),
+        // Past what f32 squares (a cutoff of 1e-45 gives such radii).
+        Bound::Sphere(Vec3::new(3.0, 1.0, 2.0), 1e30),
         // No radius: every pixel; a caster: apart.
         Bound::Everywhere,
         Bound::Apart,
@@ -153,18 +155,20 @@ fn hard_cases_stay_conservative() {
     let grid = Grid::new(320, 180, 16, 16, near, far);
     let bins = bin(&grid, view, projection, (320, 180), &spheres);
     assert_eq!(bins.global, 1);
-    assert_eq!(bins.indices[0], 7);
+    assert_eq!(bins.indices[0], 8);
     assert_eq!(bins.culled, 2, "behind the eye and past the far plane");
     assert!(
-        !bins.indices.contains(&8),
+        !bins.indices.contains(&9),
         "a light kept apart is listed nowhere"
     );
-    // The huge sphere is in every cluster.
-    assert!(
-        bins.clusters
-            .iter()
-            .all(|c| { bins.indices[c[0] as usize..(c[0] + c[1]) as usize].contains(&6) })
-    );
+    // The huge spheres are in every cluster.
+    for light in [6, 7] {
+        assert!(
+            bins.clusters
+                .iter()
+                .all(|c| { bins.indices[c[0] as usize..(c[0] + c[1]) as usize].contains(&light) })
+        );
+    }
 }
 
 #[test]

@@ -17,7 +17,7 @@ fn values(k: &Knob, r: &RenderSettings) -> Vec<Value> {
     match (k.kind, (k.get)(r)) {
         (Kind::Bool, Value::Bool(b)) => vec![Value::Bool(!b)],
         (Kind::Number { .. }, _) => vec![Value::Number(0.01), Value::Number(0.2)],
-        (Kind::Count { min, max }, _) => vec![Value::Count(min), Value::Count(max.min(3))],
+        (Kind::Count { min, max }, _) => vec![Value::Count(min), Value::Count(max.min(min + 2))],
         (Kind::Choice(words), Value::Choice(i)) => (0..words.len())
             .filter(|&j| j != i)
             .map(Value::Choice)

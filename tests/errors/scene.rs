@@ -205,7 +205,7 @@ fn scene_unknown_render_path() {
         &[
             // The TOML error quotes the line: the key and its value.
             "path = \"raytraced\"",
-            "expected forward, deferred, volumes or prepass",
+            "expected forward, deferred, volumes, prepass or tiled",
             "\"raytraced\"",
         ],
     );

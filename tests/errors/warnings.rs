@@ -9,7 +9,7 @@ use gloss::scene::{RenderPath, Scene};
 fn ignored_keys() -> String {
     let text = base_with(
         "size = [32, 24]",
-        "size = [32, 24]\nshading = \"flat\"\ncutoff = 0.01\nstencil_volumes = true\naccumulation = \"rgba32f\"\nmirror_depth = 2\nbillboard_alpha_ref = 0.25\nsort_transparent = false\npost_chain = \"cascaded\"",
+        "size = [32, 24]\nshading = \"flat\"\ncutoff = 0.01\nstencil_volumes = true\naccumulation = \"rgba32f\"\nmirror_depth = 2\nbillboard_alpha_ref = 0.25\nsort_transparent = false\npost_chain = \"cascaded\"\ntile_size = 32",
     );
     let text = text.replace("half_height = 5.0", "half_height = 5.0\nfov_y = 70.0");
     let text = text.replace(
@@ -31,7 +31,8 @@ fn load(test: &str, text: &str) -> Scene {
 fn keys_with_no_effect_are_named_with_why() {
     let w = load("warnings_named", &ignored_keys()).warnings();
     let expected = [
-        "render.cutoff = 0.01 has no effect on the forward path: only light volumes (the volumes and prepass paths) end where a light falls to it",
+        "render.cutoff = 0.01 has no effect on the forward path: only light volumes (the volumes, prepass and tiled paths) end where a light falls to it",
+        "render.tile_size = 32 has no effect on the forward path: only the tiled path bins lights into tiles and slices",
         "render.stencil_volumes = true has no effect on the forward path",
         "render.accumulation = \"rgba32f\" has no effect on the forward path: it has no light accumulation target",
         "render.mirror_depth = 2 has no effect: no object is a mirror",

@@ -38,7 +38,7 @@ use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
-use crate::frame::uniforms::unit;
+use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::gl::texture_buffer::{TextureBuffer, max_texels};
@@ -168,6 +168,9 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (glow::FRAGMENT_SHADER, "deferred/tiled_shading.frag"),
     ])?;
+    // shadow_visibility reads the caster from the Lights block (the casters
+    // are among the lights the block holds: check_lights_fit).
+    program.bind_uniform_block("Lights", LIGHTS_BINDING);
     shadows::setup_program(&program);
     Ok(Box::new(TiledShading {
         program,
@@ -246,10 +249,12 @@ impl RunPasses for TiledShading {
             p.set_i32("u_tile_size", grid.tile_size as i32);
             let (scale, bias) = grid.slice_scale_bias();
             p.set_vec2("u_slice_scale_bias", glam::Vec2::new(scale, bias));
+            gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             f.shadows.bind(gl);
             f.meshes.fullscreen.draw();
 
             f.shadows.unbind(gl);
+            gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
             for unit in [
                 unit::TILED_LIGHTS,
                 unit::TILED_CLUSTERS,

@@ -229,13 +229,14 @@ fn footprints(
     }
     for slice in grid.slice_of(lo)..=grid.slice_of(hi) {
         // The slab of depths this slice holds, within the sphere's.
+        // (The last slice runs to `hi`, which the margin puts past far.)
         let z0 = grid.slice_start(slice).max(lo);
-        let z1 = grid.slice_start(slice + 1).min(hi);
-        let (z0, z1) = if slice + 1 == grid.slices {
-            (z0, hi.max(z0))
+        let end = if slice + 1 == grid.slices {
+            hi
         } else {
-            (z0, z1.max(z0))
+            grid.slice_start(slice + 1).min(hi)
         };
+        let z1 = end.max(z0);
         // The sphere's widest cross section within [z0, z1].
         let gap = if depth < z0 {
             z0 - depth

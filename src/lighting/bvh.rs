@@ -205,6 +205,7 @@ fn slab(origin: Vec3, dir: Vec3, lo: Vec3, hi: Vec3, t_min: f32, t_max: f32) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math::lcg::Lcg;
 
     fn tri(a: [f32; 3], b: [f32; 3], c: [f32; 3]) -> Triangle {
         Triangle {
@@ -224,22 +225,6 @@ mod tests {
         assert!(!bvh.any_hit(o + Vec3::Z, down, 0.0, 0.5, |_| true));
         assert!(!bvh.any_hit(o + Vec3::Z, down, 0.0, 1.5, |_| false));
         assert_eq!(bvh.closest_hit(o + Vec3::Z, down, 5.0), Some(1.0));
-    }
-
-    /// same numbers on every run, no crate.
-    struct Lcg(u64);
-    impl Lcg {
-        fn next(&mut self) -> f32 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (self.0 >> 40) as f32 / (1u64 << 24) as f32
-        }
-        fn vec(&mut self, lo: f32, hi: f32) -> Vec3 {
-            let mut c = || lo + (hi - lo) * self.next();
-            Vec3::new(c(), c(), c())
-        }
     }
 
     #[test]

@@ -34,6 +34,8 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 
 pub mod depth;
 pub mod gaussian;
+#[cfg(test)]
+pub(crate) mod lcg;
 pub mod sphere_light;
 
 /// Builds a matrix from its four rows, written as they appear on paper.

@@ -1,20 +1,6 @@
 use super::*;
 use crate::math;
-
-/// A small deterministic generator (no dependency for a test).
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f32 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 40) as f32 / (1u64 << 24) as f32
-    }
-    fn range(&mut self, a: f32, b: f32) -> f32 {
-        a + (b - a) * self.next()
-    }
-}
+use crate::math::lcg::Lcg;
 
 fn camera() -> (Mat4, Mat4, f32, f32) {
     let view = math::look_at(Vec3::new(0.0, 4.0, 10.0), Vec3::ZERO, Vec3::Y);

@@ -80,7 +80,8 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     }
     let r = &scene.render;
     let (w, h) = r.size;
-    let grid = Grid::new(w, h, r.tile_size, r.depth_slices, 1.0, 2.0);
+    let c = &scene.camera;
+    let grid = Grid::new(w, h, r.tile_size, r.depth_slices, c.near, c.far);
     let global = (lights.lights.iter())
         .filter(|l| l.radius.is_none())
         .count();

@@ -29,7 +29,25 @@ struct ShadowMap {
 layout(std140) uniform Shadows {
     ShadowMap u_shadows[8];          // 0-3: 2D maps, 4-7: cube maps
     ivec4 u_shadow_of[MAX_LIGHTS / 4 + 1];  // light i's map: [i / 4][i % 4], -1: none
+    ivec4 u_casters[2];          // the lights with a map this frame, -1 after the last
 };
+
+#define MAX_CASTERS 8
+
+// Whether light i has a shadow map this frame.
+bool casts_shadow(int i) {
+    return u_shadow_of[i / 4][i % 4] >= 0;
+}
+
+// The k-th light with a shadow map this frame (-1: no more). A shader that
+// loops over many lights shades these in a loop of their own: the shadow
+// lookup below, with its filter loops and its eight samplers, costs far
+// more than a light's Phong term even where it returns at once (a
+// software rasteriser runs it for every light), so the lights without a
+// map skip it.
+int caster(int k) {
+    return u_casters[k / 4][k % 4];
+}
 
 // GLSL 3.30 indexes sampler arrays only with constants: shadow_2d and
 // shadow_cube pick the sampler with an if per slot.

@@ -17,7 +17,13 @@ void main() {
     vec3 V = normalize(u_eye - s.P);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < u_light_count; ++i) {
-        // Shadow mapping's second pass (notes 01 §8.5), per light.
+        if (casts_shadow(i)) continue;   // in the loop below
+        sum += phong(u_lights[i], s.P, s.N, V, s.kd, s.ks, s.shininess);
+    }
+    // The lights that cast, with shadow mapping's second pass (notes 01 §8.5).
+    for (int k = 0; k < MAX_CASTERS; ++k) {
+        int i = caster(k);
+        if (i < 0) break;
         float lit = shadow_visibility(i, s.P, s.N);
         sum += lit * phong(u_lights[i], s.P, s.N, V, s.kd, s.ks, s.shininess);
     }

@@ -11,8 +11,6 @@ uniform samplerBuffer u_light_data;    // 4 RGBA32F texels a light: the std140 L
 uniform usamplerBuffer u_clusters;     // RG32UI, per cluster: offset and count in u_light_index
 uniform usamplerBuffer u_light_index;  // R32UI light numbers; the first u_global_count are every pixel's
 uniform int u_global_count;
-uniform int u_casters[8];              // the shadow casters' light numbers (4 maps + 4 cubes)
-uniform int u_caster_count;
 uniform ivec3 u_grid;                  // tiles across, tiles up, depth slices
 uniform int u_tile_size;               // pixels
 uniform vec2 u_slice_scale_bias;       // slice = floor(ln(depth) * scale + bias)
@@ -45,13 +43,15 @@ void main() {
     if (s.depth == 1.0) discard;   // background: no surface here
     vec3 V = normalize(u_eye - s.P);
     vec3 sum = vec3(0.0);
-    // The shadow casters (at most eight), with shadow mapping's second pass
-    // (notes 01 §8.5). Only this loop calls shadow_visibility: its filter
-    // loops, run for every light of a long cluster list, would count
-    // towards llvmpipe's 65535 loop iterations per shader invocation
-    // (nested loops share the count) and cut the list short.
-    for (int k = 0; k < u_caster_count; ++k) {
-        int i = u_casters[k];
+    // The lights with a shadow map (at most eight), with shadow mapping's
+    // second pass (notes 01 §8.5). Only this loop calls shadow_visibility:
+    // besides its cost (common/shadow.glsl), its filter loops, run for
+    // every light of a long cluster list, would count towards llvmpipe's
+    // 65535 loop iterations per shader invocation (nested loops share the
+    // count) and cut the list short.
+    for (int k = 0; k < MAX_CASTERS; ++k) {
+        int i = caster(k);
+        if (i < 0) break;
         sum += shadow_visibility(i, s.P, s.N) * shade(i, s, V);
     }
     // The global list: the lights with no radius.

@@ -24,7 +24,14 @@ void main() {
     vec3 kd = material_diffuse(v_uv);
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
-        // Shadow mapping's second pass (notes 01 §8.5): how much of light i reaches here.
+        if (casts_shadow(i)) continue;   // in the loop below
+        c += phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+    }
+    // The lights that cast, with shadow mapping's second pass (notes 01
+    // §8.5): how much of light i reaches here.
+    for (int k = 0; k < MAX_CASTERS; ++k) {
+        int i = caster(k);
+        if (i < 0) break;
         float lit = shadow_visibility(i, v_position, N);
         c += lit * phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
     }

@@ -265,10 +265,20 @@ impl ShadowMaps {
         self.ubo.write(&self.pack());
     }
 
+    /// The lights whose maps are drawn this frame (a caster with nothing to
+    /// cast onto has none): the `u_casters` list of the `Shadows` block.
+    pub fn casting_lights(&self) -> Vec<usize> {
+        (self.maps.iter().zip(&self.views))
+            .filter(|(_, v)| v.is_some())
+            .map(|((c, _), _)| c.light)
+            .collect()
+    }
+
     /// The std140 `Shadows` block: per slot, the shadow matrix (bias x
     /// light projection x light view), (kind, texel, near, far) and (bias,
     /// normal offset, PCF kernel, resolution); then each light's slot, four
-    /// to an ivec4, -1 for none.
+    /// to an ivec4, -1 for none; then the casting lights' numbers, -1 after
+    /// the last (two ivec4).
     fn pack(&self) -> Vec<u8> {
         let mut out = vec![0u8; block_size(self.max_lights)];
         let mut put = |at: usize, v: &[f32]| {
@@ -303,6 +313,12 @@ impl ShadowMaps {
         let base = SLOTS * SHADOW_STRIDE;
         for (i, s) in slot_of.iter().enumerate() {
             out[base + 4 * i..base + 4 * i + 4].copy_from_slice(&s.to_ne_bytes());
+        }
+        let base = SLOTS * SHADOW_STRIDE + (self.max_lights / 4 + 1) * 16;
+        let casting = self.casting_lights();
+        for k in 0..SLOTS {
+            let light = casting.get(k).map_or(-1, |&l| l as i32);
+            out[base + 4 * k..base + 4 * k + 4].copy_from_slice(&light.to_ne_bytes());
         }
         out
     }
@@ -342,7 +358,7 @@ impl ShadowMaps {
 }
 
 fn block_size(max_lights: usize) -> usize {
-    SLOTS * SHADOW_STRIDE + (max_lights / 4 + 1) * 16
+    SLOTS * SHADOW_STRIDE + (max_lights / 4 + 1) * 16 + SLOTS / 4 * 16
 }
 
 /// The notes' "specialised sampler that takes a 4 component vector and

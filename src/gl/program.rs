@@ -293,10 +293,6 @@ impl Program {
     pub fn set_bool(&self, name: &str, v: bool) {
         self.set_i32(name, v as i32)
     }
-    /// An `int name[N]` array from its first element (glUniform1iv).
-    pub fn set_i32_array(&self, name: &str, v: &[i32]) {
-        unsafe { self.gl.uniform_1_i32_slice(self.loc(name).as_ref(), v) }
-    }
     /// A `float name[N]` array from its first element (glUniform1fv).
     pub fn set_f32_array(&self, name: &str, v: &[f32]) {
         unsafe { self.gl.uniform_1_f32_slice(self.loc(name).as_ref(), v) }

@@ -13,9 +13,9 @@
 //!    light's: the sphere around its cone) goes into every screen tile and
 //!    depth slice it may touch (src/frame/clusters.rs). Lights with no
 //!    finite radius (directional; Kl = Kq = 0) go in a global list that
-//!    every pixel shades; the shadow casters (at most eight) are shaded
-//!    everywhere too, in a loop of their own, the only one that samples
-//!    shadow maps (the shader says why).
+//!    every pixel shades; the lights with a shadow map (at most eight) are
+//!    shaded everywhere too, in a loop of their own, the only one that
+//!    samples shadow maps (the shader says why).
 //! 2. Upload, through buffer textures (src/gl/texture_buffer.rs): every
 //!    light (four RGBA32F texels each, the std140 `Light`), each cluster's
 //!    (offset, count), and the light numbers. A uniform block would stop at
@@ -43,7 +43,6 @@ use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::gl::texture_buffer::{TextureBuffer, max_texels};
 use crate::scene::knobs;
-use crate::scene::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D};
 use crate::scene::{Light, LightKind, RenderPath, Scene};
 use crate::techniques::deferred::deferred_shading::accumulation_target;
 use anyhow::Result;
@@ -132,28 +131,19 @@ pub fn bounding_sphere(l: &Light, radius: f32) -> (Vec3, f32) {
 }
 
 /// Each light's bound for the binning: its sphere; the global list (every
-/// pixel) without a radius; apart for a shadow caster, which the shader
-/// shades in a loop of its own (`u_casters`).
-pub fn light_bounds(scene: &Scene, lights: &FrameLights) -> Vec<Bound> {
-    (scene.lights.iter().zip(&lights.lights))
-        .map(|(l, f)| match (l.shadow, f.radius) {
-            (Some(_), _) => Bound::Apart,
-            (None, Some(r)) => {
+/// pixel) without a radius; apart for the lights in `casting` (those with a
+/// shadow map this frame), which the shader shades in a loop of their own
+/// (`caster(k)`, glsl/common/shadow.glsl).
+pub fn light_bounds(scene: &Scene, lights: &FrameLights, casting: &[usize]) -> Vec<Bound> {
+    (scene.lights.iter().zip(&lights.lights).enumerate())
+        .map(|(i, (l, f))| match (casting.contains(&i), f.radius) {
+            (true, _) => Bound::Apart,
+            (false, Some(r)) => {
                 let (c, r) = bounding_sphere(l, r);
                 Bound::Sphere(c, r)
             }
-            (None, None) => Bound::Everywhere,
+            (false, None) => Bound::Everywhere,
         })
-        .collect()
-}
-
-/// The shadow casters' light numbers: at most a light per shadow map
-/// (`u_casters[8]` in the shader).
-fn casters(scene: &Scene) -> Vec<i32> {
-    (scene.lights.iter().enumerate())
-        .filter(|(_, l)| l.shadow.is_some())
-        .map(|(i, _)| i as i32)
-        .take(MAX_SHADOW_MAPS_2D + MAX_SHADOW_CUBES)
         .collect()
 }
 
@@ -188,7 +178,7 @@ pub fn bin_view(f: &Frame, size: (u32, u32), max_texels: usize) -> (Grid, Bins) 
     let r = &f.scene.render;
     let u = f.uniforms;
     let grid = Grid::new(size.0, size.1, r.tile_size, r.depth_slices, u.near, u.far);
-    let mut bounds = light_bounds(f.scene, f.lights);
+    let mut bounds = light_bounds(f.scene, f.lights, &f.shadows.casting_lights());
     if f.view.curved.is_some() {
         for b in bounds.iter_mut().filter(|b| **b != Bound::Apart) {
             *b = Bound::Everywhere;
@@ -240,9 +230,6 @@ impl RunPasses for TiledShading {
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             p.set_mat4("u_view", &(u.view * f.view.reflection));
             p.set_i32("u_global_count", bins.global as i32);
-            let casters = casters(f.scene);
-            p.set_i32("u_caster_count", casters.len() as i32);
-            p.set_i32_array("u_casters", &casters);
             p.set_ivec3(
                 "u_grid",
                 glam::IVec3::new(grid.tiles.0 as i32, grid.tiles.1 as i32, grid.slices as i32),

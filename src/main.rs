@@ -193,7 +193,13 @@ fn run(cli: Cli) -> Result<()> {
             }
             Ok(())
         }
-        Some(Command::Bench(args)) => gloss::bench::run(&args, headless_backend(cli.backend)?)
-            .map_err(|e| anyhow!("bench: {e:#}")),
+        Some(Command::Bench(args)) => {
+            let args = gloss::bench::BenchArgs {
+                set: cli.set.clone(),
+                ..args
+            };
+            gloss::bench::run(&args, headless_backend(cli.backend)?)
+                .map_err(|e| anyhow!("bench: {e:#}"))
+        }
     }
 }

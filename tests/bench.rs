@@ -167,3 +167,43 @@ fn the_post_floor_counts_each_pass_at_the_size_it_draws() {
     assert_eq!(row("bloom merge"), (1, 1.0), "{stdout}");
     assert_eq!(row("tone mapping"), (1, 1.0), "{stdout}");
 }
+
+#[test]
+fn bench_applies_set_to_every_setting() {
+    // With --vary, --set comes first and the varied keys after it: every
+    // row is on the tiled path, and the reference (forward) is exact.
+    let out = std::env::temp_dir().join("gloss-bench-set");
+    let _ = std::fs::remove_dir_all(&out);
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "scenes/many-lights.toml"])
+        .args(["--set", "render.path=tiled"])
+        .args(["--vary", "render.depth_slices=1,4"])
+        .args(["--reference", "render.path=forward"])
+        .args(["--frames", "1", "--warmup", "0", "--size", "96x54", "--out"])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rows: Vec<&str> = (stdout.lines())
+        .filter(|l| l.starts_with("render.depth_slices="))
+        .collect();
+    assert_eq!(rows.len(), 2, "{stdout}");
+    for r in rows {
+        assert_eq!(r.split_whitespace().nth(1), Some("tiled"), "{stdout}");
+    }
+    // Without --vary, --set reaches the scene too: a bad value is refused.
+    let bad = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "scenes/many-lights.toml", "--paths", "tiled"])
+        .args(["--set", "render.depth_slices=0"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(!bad.status.success());
+    assert!(
+        String::from_utf8_lossy(&bad.stderr).contains("render.depth_slices"),
+        "{}",
+        String::from_utf8_lossy(&bad.stderr)
+    );
+}

@@ -230,7 +230,7 @@ struct Row {
 }
 
 pub(super) fn run(args: &BenchArgs, scene_path: &Path, ctx: &Headless) -> Result<()> {
-    let mut base = Scene::load(scene_path)?;
+    let mut base = Scene::load_with(scene_path, &args.set)?;
     if let Some(size) = args.size {
         base.render.size = size;
     }

@@ -8,6 +8,11 @@ use std::path::PathBuf;
 pub struct BenchArgs {
     /// The scene to measure (default scenes/many-lights.toml).
     pub scene: Option<PathBuf>,
+    /// The command line's `--set KEY=VALUE`s (a global option, not parsed
+    /// here): applied to the scene before every setting, the reference's
+    /// included.
+    #[arg(skip)]
+    pub set: Vec<String>,
     /// Render paths, comma-separated (deferred runs both its forms: a pass
     /// per light, and one pass over all the lights).
     #[arg(

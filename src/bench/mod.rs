@@ -84,7 +84,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     };
     let scene_path = (args.scene.clone()).unwrap_or_else(|| PathBuf::from(default));
     let scene_path = crate::assets::scene_path(&scene_path);
-    let base = Scene::load(&scene_path)?;
+    let base = Scene::load_with(&scene_path, &args.set)?;
     // The bench runs the scene on several paths: only what holds on all.
     base.print_warnings(&base.warnings_on_every_path());
     let ctx = Headless::new(backend, false)?;

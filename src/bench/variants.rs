@@ -57,11 +57,18 @@ pub(super) fn run(
         }
         s
     };
-    let reference_scene = sized(Scene::load_with(scene_path, &args.reference)?);
+    // `--set` first, then the setting's own keys (a later key wins).
+    let with_set = |keys: &[String]| [&args.set[..], keys].concat();
+    let reference_scene = sized(Scene::load_with(scene_path, &with_set(&args.reference))?);
     // Every setting is checked before anything is measured.
     let scenes: Vec<(String, Scene)> = combos
         .iter()
-        .map(|c| Ok((c.join(" "), sized(Scene::load_with(scene_path, c)?))))
+        .map(|c| {
+            Ok((
+                c.join(" "),
+                sized(Scene::load_with(scene_path, &with_set(c))?),
+            ))
+        })
         .collect::<Result<_>>()?;
     let (w, h) = reference_scene.render.size;
     eprintln!(

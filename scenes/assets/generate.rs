@@ -10,6 +10,9 @@
 //!   a curved mirror, which moves vertices, not pixels;
 //! * `rock.obj`: a low-poly displaced icosphere, uvs but NO normals, so that
 //!   loading it exercises `geometry::compute_normals`;
+//! * `rock-20k.obj`: the same rock at 20480 triangles, the ~20k-triangle
+//!   mesh of `scenes/logl-like.toml` (nine of them, as LearnOpenGL's
+//!   deferred-shading demo draws nine backpacks);
 //! * `tree.png`, `grass.png`: 128x128 RGBA billboard sprites with real alpha
 //!   (1 on the tree, 0 around it, a one-texel soft edge); the transparent
 //!   texels keep the sprite's colour so filtering brings in no dark fringe.
@@ -49,9 +52,15 @@ fn main() -> Result<()> {
     )?;
     write_obj(
         &dir.join("rock.obj"),
-        &rock(),
+        &rock(2),
         false,
         "displaced icosphere, no normals",
+    )?;
+    write_obj(
+        &dir.join("rock-20k.obj"),
+        &rock(5),
+        false,
+        "displaced icosphere, 20480 triangles, no normals (scenes/logl-like.toml)",
     )?;
     Ok(())
 }
@@ -285,11 +294,12 @@ fn torus_knot(p: u32, q: u32, rings: u32, sides: u32) -> MeshData {
     m
 }
 
-/// An icosphere (2 subdivisions) pushed in and out along the radius by a
-/// deterministic function of position (so vertices split at the uv seam move
-/// together), squashed a little in y.
-fn rock() -> MeshData {
-    let mut m = geometry::icosphere(2);
+/// An icosphere (`subdivisions` times: 2 gives 320 triangles, 5 gives
+/// 20480) pushed in and out along the radius by a deterministic function of
+/// position (so vertices split at the uv seam move together), squashed a
+/// little in y.
+fn rock(subdivisions: u32) -> MeshData {
+    let mut m = geometry::icosphere(subdivisions);
     for v in &mut m.vertices {
         let p = Vec3::from(v.position);
         let bump = 0.12 * (3.1 * p.x + 1.3).sin() * (2.7 * p.y - 0.4).cos()

@@ -54,6 +54,11 @@ pub struct BenchArgs {
     /// default scene scenes/antialiasing.toml.
     #[arg(long, conflicts_with = "vary")]
     pub aa: bool,
+    /// Measure how each path's frame time grows with the number of lights
+    /// (their radii shrunk so that about as many reach each pixel) and with
+    /// the number of pixels, instead (src/bench/scaling.rs).
+    #[arg(long, conflicts_with_all = ["vary", "aa"])]
+    pub scaling: bool,
     /// Where the CSV and the plot go.
     #[arg(long, default_value = "target/bench")]
     pub out: PathBuf,

@@ -11,7 +11,8 @@
 //! timed with a GL_TIME_ELAPSED query ("gpu" column).
 //!
 //! `--aa` measures anti-aliasing against a supersampled reference instead
-//! (`aa`).
+//! (`aa`); `--scaling`, how the paths' times grow with lights and pixels
+//! (`scaling`).
 //!
 //! The files: `args` (the command line), `stats` (median and spread of the
 //! samples), `table` (the rows and the text table), `csv` and `plot` (the
@@ -23,6 +24,7 @@ pub mod bloom;
 mod csv;
 mod plot;
 mod post;
+mod scaling;
 pub mod shadows;
 mod stats;
 mod table;
@@ -91,6 +93,9 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     let software = ctx.info.renderer.contains("llvmpipe") || ctx.info.renderer.contains("softpipe");
     if args.aa {
         return aa::run(args, &scene_path, &ctx);
+    }
+    if args.scaling {
+        return scaling::run(args, &base, &ctx, software);
     }
     if !args.vary.is_empty() {
         return variants::run(args, &scene_path, &ctx, software);
@@ -232,7 +237,13 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
             s.lights
         );
         rows.push(measure(
-            &ctx, software, args, &scene, reference, row, &progress,
+            &ctx,
+            software,
+            args,
+            &scene,
+            Some(reference),
+            row,
+            &progress,
         )?);
     }
     eprintln!();
@@ -259,13 +270,14 @@ fn finish(rows: &[BenchRow], args: &BenchArgs) -> Result<()> {
 }
 
 /// Render `scene` `args.warmup + args.frames` times, timing each pass, and
-/// fill `row`'s times and its error against `reference`.
+/// fill `row`'s times and its error against `reference` (None: the error is
+/// not measured, and reads as incomparable).
 fn measure(
     ctx: &Headless,
     software: bool,
     args: &BenchArgs,
     scene: &Scene,
-    reference: &image::RgbaImage,
+    reference: Option<&image::RgbaImage>,
     row: BenchRow,
     progress: &str,
 ) -> Result<BenchRow> {
@@ -312,8 +324,10 @@ fn measure(
         frame.push(r.last_times.frame_ms);
         add_pass_times(&mut passes, &r.last_times.passes);
     }
-    let img = r.read_image();
-    let m = compare_rgba8(&img, reference, 1.0 / 255.0)?;
+    let m = match reference {
+        Some(reference) => compare_rgba8(&r.read_image(), reference, 1.0 / 255.0)?,
+        None => crate::image_compare::Metrics::incomparable(1.0 / 255.0),
+    };
     Ok(BenchRow {
         passes: passes
             .into_iter()

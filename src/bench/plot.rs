@@ -233,6 +233,105 @@ where
     Ok(())
 }
 
+/// One path's points for [`plot_scaling`]: (x, frame ms).
+pub struct ScalingSeries {
+    pub path: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+impl ScalingSeries {
+    pub fn new(path: &str) -> ScalingSeries {
+        ScalingSeries {
+            path: path.to_string(),
+            points: Vec::new(),
+        }
+    }
+}
+
+/// Writes a log-log PNG plot ([`PLOT_SIZE`]) of frame time (y, ms) against
+/// `x_desc` (light count, Mpixels): one line per path. Points that are not
+/// finite and positive are left out. Creates the parent directory.
+pub fn plot_scaling(
+    series: &[ScalingSeries],
+    title: &str,
+    x_desc: &str,
+    path: &Path,
+) -> anyhow::Result<()> {
+    ensure_font()?;
+    let ok = |p: &&(f64, f64)| p.0.is_finite() && p.0 > 0.0 && p.1.is_finite() && p.1 > 0.0;
+    let pts = || series.iter().flat_map(|s| s.points.iter().filter(ok));
+    let range = |v: Vec<f64>| {
+        let lo = v.iter().cloned().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+        if lo.is_finite() && hi.is_finite() {
+            (lo / 1.5, hi * 1.5)
+        } else {
+            (1.0, 10.0)
+        }
+    };
+    let (x0, x1) = range(pts().map(|p| p.0).collect());
+    let (y0, y1) = range(pts().map(|p| p.1).collect());
+    let err = |e: &dyn std::fmt::Display| anyhow!("drawing plot: {e}");
+    let (w, h) = PLOT_SIZE;
+    let mut buf = vec![0u8; w as usize * h as usize * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, (FONT, 22))
+            .margin(20)
+            .x_label_area_size(50)
+            .y_label_area_size(70)
+            .build_cartesian_2d(
+                (x0..x1)
+                    .log_scale()
+                    .with_key_points(decade_ticks(x0, x1, &[1.0, 2.0, 4.0])),
+                (y0..y1)
+                    .log_scale()
+                    .with_key_points(decade_ticks(y0, y1, &[1.0, 2.0, 5.0])),
+            )
+            .map_err(|e| err(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc(x_desc)
+            .y_desc("frame time, median (ms, log scale)")
+            .x_label_formatter(&fmt_ms_axis)
+            .y_label_formatter(&fmt_ms_axis)
+            .label_style((FONT, 15))
+            .axis_desc_style((FONT, 17))
+            .draw()
+            .map_err(|e| err(&e))?;
+        for (i, s) in series.iter().enumerate() {
+            let color = COLORS[i % COLORS.len()];
+            let p: Vec<(f64, f64)> = s.points.iter().filter(ok).copied().collect();
+            chart
+                .draw_series(LineSeries::new(p.iter().copied(), color.stroke_width(2)))
+                .map_err(|e| err(&e))?
+                .label(s.path.as_str())
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                });
+            chart
+                .draw_series(p.iter().map(|&q| Circle::new(q, 4, color.filled())))
+                .map_err(|e| err(&e))?;
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font((FONT, 15))
+            .position(SeriesLabelPosition::UpperLeft)
+            .draw()
+            .map_err(|e| err(&e))?;
+        root.present().map_err(|e| err(&e))?;
+    }
+    let img = image::RgbImage::from_raw(w, h, buf)
+        .ok_or_else(|| anyhow!("plot buffer has the wrong size"))?;
+    create_parent(path)?;
+    img.save_with_format(path, image::ImageFormat::Png)
+        .with_context(|| format!("writing {}", path.display()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -97,7 +97,7 @@ pub(super) fn run(
             ..BenchRow::default()
         };
         let progress = format!("[{}/{}] {label}", i + 1, scenes.len());
-        let mut row = measure(ctx, software, args, scene, &reference, row, &progress)?;
+        let mut row = measure(ctx, software, args, scene, Some(&reference), row, &progress)?;
         // A scene whose lights cast: its shadows against the exact ones.
         if scene.lights.iter().any(|l| l.shadow.is_some()) {
             row.shadow = Some(super::shadows::evaluate(ctx, scene)?.errors);

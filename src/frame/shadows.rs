@@ -23,8 +23,11 @@ use crate::math::shadow as matrices;
 use crate::scene::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D};
 use crate::scene::{Camera, CubeRender, LightKind, Pcf, Scene, Shadow};
 use anyhow::Result;
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Mat4, Vec3};
 use glow::HasContext;
+
+mod block;
+use block::block_size;
 
 /// The uniform-block binding point of the `Shadows` block.
 pub const SHADOWS_BINDING: u32 = 1;
@@ -262,7 +265,7 @@ impl ShadowMaps {
         self.views = (self.maps.iter())
             .map(|(c, _)| light_view(scene, c, &points, &visible))
             .collect();
-        self.ubo.write(&self.pack());
+        self.ubo.write(&block::pack(self));
     }
 
     /// The lights whose maps are drawn this frame (a caster with nothing to
@@ -272,55 +275,6 @@ impl ShadowMaps {
             .filter(|(_, v)| v.is_some())
             .map(|((c, _), _)| c.light)
             .collect()
-    }
-
-    /// The std140 `Shadows` block: per slot, the shadow matrix (bias x
-    /// light projection x light view), (kind, texel, near, far) and (bias,
-    /// normal offset, PCF kernel, resolution); then each light's slot, four
-    /// to an ivec4, -1 for none; then the casting lights' numbers, -1 after
-    /// the last (two ivec4).
-    fn pack(&self) -> Vec<u8> {
-        let mut out = vec![0u8; block_size(self.max_lights)];
-        let mut put = |at: usize, v: &[f32]| {
-            for (k, x) in v.iter().enumerate() {
-                out[at + 4 * k..at + 4 * k + 4].copy_from_slice(&x.to_ne_bytes());
-            }
-        };
-        let mut slot_of = vec![-1i32; self.max_lights];
-        for ((c, _), view) in self.maps.iter().zip(&self.views) {
-            let Some(v) = view else { continue };
-            let at = c.slot * SHADOW_STRIDE;
-            let s = c.shadow;
-            put(
-                at,
-                &(matrices::bias() * v.view_projections[0]).to_cols_array(),
-            );
-            put(
-                at + 64,
-                &Vec4::new(v.kind as f32, v.texel, v.near, v.far).to_array(),
-            );
-            let b = [
-                s.bias,
-                s.normal_offset,
-                s.pcf.code() as f32,
-                s.resolution as f32,
-            ];
-            put(at + 80, &b);
-            if c.light < slot_of.len() {
-                slot_of[c.light] = c.slot as i32;
-            }
-        }
-        let base = SLOTS * SHADOW_STRIDE;
-        for (i, s) in slot_of.iter().enumerate() {
-            out[base + 4 * i..base + 4 * i + 4].copy_from_slice(&s.to_ne_bytes());
-        }
-        let base = SLOTS * SHADOW_STRIDE + (self.max_lights / 4 + 1) * 16;
-        let casting = self.casting_lights();
-        for k in 0..SLOTS {
-            let light = casting.get(k).map_or(-1, |&l| l as i32);
-            out[base + 4 * k..base + 4 * k + 4].copy_from_slice(&light.to_ne_bytes());
-        }
-        out
     }
 
     /// Bind every map to its texture unit (the unused samplers get the
@@ -355,10 +309,6 @@ impl ShadowMaps {
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, SHADOWS_BINDING, None);
         }
     }
-}
-
-fn block_size(max_lights: usize) -> usize {
-    SLOTS * SHADOW_STRIDE + (max_lights / 4 + 1) * 16 + SLOTS / 4 * 16
 }
 
 /// The notes' "specialised sampler that takes a 4 component vector and

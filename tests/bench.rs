@@ -207,3 +207,47 @@ fn bench_applies_set_to_every_setting() {
         String::from_utf8_lossy(&bad.stderr)
     );
 }
+
+#[test]
+fn bench_scaling_measures_lights_and_pixels() {
+    let out = std::env::temp_dir().join("gloss-bench-scaling");
+    let _ = std::fs::remove_dir_all(&out);
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "--scaling", "--frames", "1", "--warmup", "1"])
+        .args(["--size", "64x36", "--out"])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // 16 to 4096 lights: radius halves for every fourfold count, about as
+    // many lights reach a pixel at every count, and only the tiled path
+    // takes more lights than the uniform block holds.
+    let rows: Vec<Vec<&str>> = (stdout.lines())
+        .map(|l| l.split_whitespace().collect::<Vec<_>>())
+        .filter(|c| c.len() >= 4 && ["16", "64", "256", "1024", "4096"].contains(&c[0]))
+        .collect();
+    assert_eq!(rows.len(), 5, "{stdout}");
+    let radius: Vec<f64> = rows.iter().map(|c| c[1].parse().unwrap()).collect();
+    for pair in radius.windows(2) {
+        // Printed to 3 decimals.
+        assert!((pair[0] / pair[1] - 2.0).abs() < 3e-3, "{radius:?}");
+    }
+    let reach: Vec<f64> = rows.iter().map(|c| c[2].parse().unwrap()).collect();
+    assert!(reach.iter().all(|&r| r > 1.0), "{reach:?}\n{stdout}");
+    assert!(rows[4].join(" ").contains("uniform block"), "{stdout}");
+    let tiled: f64 = rows[4].last().unwrap().parse().unwrap();
+    assert!(tiled > 0.0, "{stdout}");
+    // Four frame sizes, half to twice the measured one.
+    for size in ["32x18", "64x36", "96x54", "128x72"] {
+        assert!(
+            stdout.lines().any(|l| l.trim_start().starts_with(size)),
+            "{stdout}"
+        );
+    }
+    for png in ["scaling-lights.png", "scaling-pixels.png"] {
+        let img = image::open(out.join(png)).unwrap();
+        assert_eq!((img.width(), img.height()), gloss::bench::PLOT_SIZE);
+    }
+}

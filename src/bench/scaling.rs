@@ -10,7 +10,8 @@
 //!    times: the mean length of the tiled path's cluster lists, which says
 //!    how many lights do reach a pixel. Paths that read the lights from the
 //!    uniform block stop at its size.
-//! 2. Pixels: the scene's own lights at 640x360 up to 2560x1440.
+//! 2. Pixels: the scene's own lights at half to twice the size measured
+//!    (640x360 up to 2560x1440 for a 1280x720 scene).
 //!
 //! The images are not compared (each count is a different scene); the
 //! paths' errors are what `gloss bench` without `--scaling` measures.
@@ -20,14 +21,19 @@ use super::{BenchArgs, BenchRow, measure};
 use crate::frame::clusters::{Grid, bin};
 use crate::frame::lights::{FrameLights, max_lights};
 use crate::gl::Headless;
+use crate::gl::program::Sources;
 use crate::lighting::attenuation;
+use crate::renderer::Renderer;
 use crate::scene::{DeferredLights, RenderPath, Scene};
 use crate::techniques::deferred::tiled_shading::light_bounds;
 use anyhow::{Result, bail};
+use glam::Vec3;
 use glow::HasContext;
 
 const LIGHT_COUNTS: [usize; 5] = [16, 64, 256, 1024, 4096];
-const SIZES: [(u32, u32); 4] = [(640, 360), (1280, 720), (1920, 1080), (2560, 1440)];
+/// Frame sizes, as multiples of the measured size (`--size`, else the
+/// scene's): 1280x720 gives 640x360 to 2560x1440.
+const SCALES: [f32; 4] = [0.5, 1.0, 1.5, 2.0];
 
 /// The paths measured, as (label, path, one pass over the lights).
 const PATHS: [(&str, RenderPath, bool); 4] = [
@@ -69,6 +75,49 @@ fn with_lights(base: &Scene, count: usize) -> Result<(Scene, f32)> {
         ..grid
     })?;
     Ok((s, r))
+}
+
+/// How many lights reach a pixel's surface (it lies within their radius),
+/// on average over up to 4000 pixels spread over the image: the surface
+/// points come from a frame's depth buffer (the tiled path, which takes
+/// any light count).
+fn mean_reaching(ctx: &Headless, scene: &Scene) -> Result<f32> {
+    let s = on_path(scene, RenderPath::Tiled, false);
+    let (w, h) = s.render.size;
+    let mut r = Renderer::new(
+        &ctx.gl,
+        &ctx.debug,
+        &s,
+        &Sources::Embedded,
+        w as i32,
+        h as i32,
+    )?;
+    r.render(&s.camera)?;
+    let depth = r.read_depth();
+    let inverse = (s.camera.projection(w as f32 / h as f32) * s.camera.view()).inverse();
+    let lights = FrameLights::new(&s);
+    let step = ((w * h) as usize / 4000).max(1);
+    let (mut pixels, mut reached) = (0usize, 0usize);
+    for i in (0..depth.len()).step_by(step) {
+        if depth[i] >= 1.0 {
+            continue;
+        }
+        let (x, y) = ((i as u32 % w) as f32 + 0.5, (i as u32 / w) as f32 + 0.5);
+        let ndc = Vec3::new(x / w as f32, y / h as f32, depth[i]) * 2.0 - Vec3::ONE;
+        let p = inverse.project_point3(ndc);
+        pixels += 1;
+        reached += (s.lights.iter().zip(&lights.lights))
+            .filter(|(l, f)| {
+                f.radius
+                    .is_none_or(|radius| l.position.distance(p) <= radius)
+            })
+            .count();
+    }
+    Ok(if pixels == 0 {
+        0.0
+    } else {
+        reached as f32 / pixels as f32
+    })
 }
 
 /// The mean number of lights the tiled path lists for a non-empty cluster
@@ -120,8 +169,8 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless, software: bool
         .map(|(label, ..)| ScalingSeries::new(label))
         .collect();
     let mut table = format!(
-        "frame ms against light count at {}x{} (radius shrinks as 1/sqrt(count))\n{:>7} {:>8} {:>8}",
-        size.0, size.1, "lights", "radius", "listed"
+        "frame ms against light count at {}x{} (radius shrinks as 1/sqrt(count); reach: lights that reach a pixel, mean; listed: lights in a tiled cluster's list, mean)\n{:>7} {:>8} {:>7} {:>8}",
+        size.0, size.1, "lights", "radius", "reach", "listed"
     );
     for (label, ..) in PATHS {
         table.push_str(&format!(" {label:>21}"));
@@ -129,7 +178,11 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless, software: bool
     for &n in &LIGHT_COUNTS {
         let (mut scene, r) = with_lights(base, n)?;
         scene.render.size = size;
-        table.push_str(&format!("\n{n:>7} {r:>8.3} {:>8.1}", mean_listed(&scene)));
+        table.push_str(&format!(
+            "\n{n:>7} {r:>8.3} {:>7.1} {:>8.1}",
+            mean_reaching(ctx, &scene)?,
+            mean_listed(&scene)
+        ));
         for (k, &(label, path, single)) in PATHS.iter().enumerate() {
             if path != RenderPath::Tiled && n > block {
                 table.push_str(&format!(" {:>21}", "— (uniform block)"));
@@ -156,7 +209,11 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless, software: bool
     for (label, ..) in PATHS {
         table.push_str(&format!(" {label:>21}"));
     }
-    for &(w, h) in &SIZES {
+    for scale in SCALES {
+        let (w, h) = (
+            ((size.0 as f32 * scale) as u32).max(1),
+            ((size.1 as f32 * scale) as u32).max(1),
+        );
         let mut scene = base.clone();
         scene.render.size = (w, h);
         let mp = (w * h) as f64 / 1e6;

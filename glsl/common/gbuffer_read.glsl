@@ -29,11 +29,30 @@ vec2 gbuffer_uv() {
 // view-projection and the perspective divide undone. (`uv` is the G-buffer
 // texture coordinate, unused here: with a split view the viewport is only
 // part of the texture.)
-vec3 world_position(vec2 uv, float depth) {
-    vec2 in_viewport = (gl_FragCoord.xy - u_viewport.xy) / u_viewport.zw;
+vec3 world_position_at(vec2 window, float depth) {
+    vec2 in_viewport = (window - u_viewport.xy) / u_viewport.zw;
     vec4 ndc = vec4(vec3(in_viewport, depth) * 2.0 - 1.0, 1.0);
     vec4 world = u_inverse_view_projection * ndc;
     return world.xyz / world.w;
+}
+
+vec3 world_position(vec2 uv, float depth) {
+    return world_position_at(gl_FragCoord.xy, depth);
+}
+
+// The geometry at G-buffer texel `texel` (a pixel other than this
+// fragment's: the far field's samples): depth, position, normal and
+// shininess, no material colours.
+Surface read_geometry_texel(ivec2 texel) {
+    Surface s;
+    s.depth = texelFetch(u_gbuffer_depth, texel, 0).r;
+    vec4 ns = texelFetch(u_gbuffer_normal, texel, 0);
+    s.N = ns.xyz;
+    s.shininess = ns.w;
+    s.kd = vec3(0.0);
+    s.ks = vec3(0.0);
+    s.P = world_position_at(vec2(texel) + 0.5, s.depth);
+    return s;
 }
 
 Surface read_gbuffer(vec2 uv) {

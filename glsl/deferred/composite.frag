@@ -12,9 +12,11 @@ out vec4 frag_color;
 void main() {
     vec2 uv = gbuffer_uv();
     float depth = texture(u_gbuffer_depth, uv).r;
+#ifdef WRITE_DEPTH
     // The scene's depth goes to the output too: the passes that draw after
     // the composite (mirrors) test against it.
     gl_FragDepth = depth;
+#endif
     if (depth == 1.0) {
         frag_color = output_color(u_background);
         return;

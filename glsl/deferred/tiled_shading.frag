@@ -7,25 +7,24 @@
 #include "common/lighting.glsl"
 #include "common/shadow.glsl"
 #include "common/gbuffer_read.glsl"
-uniform samplerBuffer u_light_data;    // 4 RGBA32F texels a light: the std140 Light
-uniform usamplerBuffer u_clusters;     // RG32UI, per cluster: offset and count in u_light_index
-uniform usamplerBuffer u_light_index;  // R32UI light numbers; the first u_global_count are every pixel's
+#include "common/light_buffer.glsl"
+#ifdef FAR_FIELD
+#include "common/far_field.glsl"
+#endif
+// R32UI: per cluster, two texels (offset, count) into the light numbers,
+// which follow from texel u_index_base; the first u_global_count of those
+// are every pixel's.
+uniform usamplerBuffer u_clusters;
+uniform int u_index_base;
 uniform int u_global_count;
 uniform ivec3 u_grid;                  // tiles across, tiles up, depth slices
 uniform int u_tile_size;               // pixels
 uniform vec2 u_slice_scale_bias;       // slice = floor(ln(depth) * scale + bias)
 uniform mat4 u_view;                   // world to eye space (depth = -z)
-uniform vec3 u_eye;
+#ifndef FAR_FIELD
+uniform vec3 u_eye;                    // (common/far_field.glsl declares it too)
+#endif
 out vec4 light_out;
-
-Light light_at(int i) {
-    Light l;
-    l.position_type = texelFetch(u_light_data, 4 * i);
-    l.direction_radius = texelFetch(u_light_data, 4 * i + 1);
-    l.color_cos_outer = texelFetch(u_light_data, 4 * i + 2);
-    l.atten_cos_inner = texelFetch(u_light_data, 4 * i + 3);
-    return l;
-}
 
 // Light i at the surface, as the light-volume shader shades it: nothing
 // beyond the light's radius (a listed light may not reach every pixel of
@@ -35,6 +34,19 @@ vec3 shade(int i, Surface s, vec3 V) {
     float radius = light.direction_radius.w;
     if (radius >= 0.0 && distance(s.P, light.position_type.xyz) > radius) return vec3(0.0);
     return phong(light, s.P, s.N, V, s.kd, s.ks, s.shininess);
+}
+
+// A listed light's share of this pixel: all of it up to its radius, or,
+// with the far field, its near part (the far part comes from far_field).
+vec3 shade_listed(int i, Surface s, vec3 V) {
+#ifdef FAR_FIELD
+    Light light = light_at(i);
+    float w = near_weight(distance(s.P, light.position_type.xyz), light.direction_radius.w);
+    if (w <= 0.0) return vec3(0.0);
+    return w * phong(light, s.P, s.N, V, s.kd, s.ks, s.shininess);
+#else
+    return shade(i, s, V);
+#endif
 }
 
 void main() {
@@ -56,7 +68,7 @@ void main() {
     }
     // The global list: the lights with no radius.
     for (int k = 0; k < u_global_count; ++k)
-        sum += shade(int(texelFetch(u_light_index, k).r), s, V);
+        sum += shade(int(texelFetch(u_clusters, u_index_base + k).r), s, V);
 
     // This pixel's cluster: its tile, and its slice from its eye-space depth.
     ivec2 tile = min(ivec2(gl_FragCoord.xy - u_viewport.xy) / u_tile_size, u_grid.xy - 1);
@@ -64,8 +76,17 @@ void main() {
     float slice_f = floor(log(max(depth, 1e-30)) * u_slice_scale_bias.x + u_slice_scale_bias.y);
     int slice = int(clamp(slice_f, 0.0, float(u_grid.z - 1)));
     int cluster = (slice * u_grid.y + tile.y) * u_grid.x + tile.x;
-    uvec2 list = texelFetch(u_clusters, cluster).rg;
-    for (uint k = 0u; k < list.y; ++k)
-        sum += shade(int(texelFetch(u_light_index, int(list.x + k)).r), s, V);
+    int offset = u_index_base + int(texelFetch(u_clusters, 2 * cluster).r);
+    int count = int(texelFetch(u_clusters, 2 * cluster + 1).r);
+    for (int k = 0; k < count; ++k)
+        sum += shade_listed(int(texelFetch(u_clusters, offset + k).r), s, V);
+#ifdef FAR_FIELD
+    sum += far_field(s, V, distance(u_eye, s.P));
+#endif
+#ifdef FAR_FIELD_BOUND
+    // Instead of the light: the far field's error bound at this pixel.
+    light_out = vec4(vec3(far_field_bound(s, distance(u_eye, s.P))), 1.0);
+    return;
+#endif
     light_out = vec4(sum, 1.0);
 }

@@ -61,6 +61,8 @@ pub fn csv(rows: &[BenchRow]) -> String {
         "rmse_x255",
         "max_abs_x255",
         "pct_over_1",
+        "bound_max_x255",
+        "bound_pct_over_1",
         "shadow_misclassified_pct",
         "shadow_acne_pct",
         "shadow_peter_panning",
@@ -108,6 +110,9 @@ pub fn csv(rows: &[BenchRow]) -> String {
         c.push(csv_num(r.rmse * 255.0));
         c.push(csv_num(r.max_abs * 255.0));
         c.push(csv_num(r.pct_over_1));
+        let b = r.bound.as_ref();
+        c.push(b.map_or_else(String::new, |b| csv_num(b.max * 255.0)));
+        c.push(b.map_or_else(String::new, |b| csv_num(b.pct_over_1)));
         let s = r.shadow.as_ref();
         c.push(s.map_or_else(String::new, |s| csv_num(s.misclassified * 100.0)));
         c.push(s.map_or_else(String::new, |s| csv_num(s.acne * 100.0)));

@@ -16,12 +16,16 @@
 //!
 //! The files: `args` (the command line), `stats` (median and spread of the
 //! samples), `table` (the rows and the text table), `csv` and `plot` (the
-//! CSV file and the PNG plot of error against frame time).
+//! CSV file and the PNG plot of error against frame time), `floor` (every
+//! pass against the fill-rate floor measured in the same run), `bound` (the
+//! far field's analytic error bound beside its measured error).
 
 pub mod aa;
 mod args;
 pub mod bloom;
+mod bound;
 mod csv;
+mod floor;
 mod plot;
 mod post;
 mod scaling;
@@ -248,6 +252,10 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     }
     eprintln!();
     finish(&rows, args)?;
+    let mut sized = base.clone();
+    sized.render.size = (w, h);
+    let floor_ms = post::full_screen_ms(&ctx, args, &sized)?;
+    println!("{}", floor::table(&rows, floor_ms, (w, h)));
     if !base.post.is_empty() {
         let mut scene = base.clone();
         scene.render.size = (w, h);
@@ -324,10 +332,13 @@ fn measure(
         frame.push(r.last_times.frame_ms);
         add_pass_times(&mut passes, &r.last_times.passes);
     }
+    let image = r.read_image();
     let m = match reference {
-        Some(reference) => compare_rgba8(&r.read_image(), reference, 1.0 / 255.0)?,
+        Some(reference) => compare_rgba8(&image, reference, 1.0 / 255.0)?,
         None => crate::image_compare::Metrics::incomparable(1.0 / 255.0),
     };
+    drop(r);
+    let bound = bound::far_field(ctx, scene, &image)?;
     Ok(BenchRow {
         passes: passes
             .into_iter()
@@ -343,6 +354,7 @@ fn measure(
         rmse: m.rmse,
         max_abs: m.max_abs,
         pct_over_1: m.frac_over * 100.0,
+        bound,
         ..row
     })
 }

@@ -86,20 +86,29 @@ fn post_times(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<Vec<Pos
     Ok(out)
 }
 
-/// The table: each post pass's time, its floor and the ratio, then the
-/// whole chain's.
-pub fn floor_table(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<String> {
-    let (w, h) = scene.render.size;
-    // The opaque full-screen rate: one invert step at this size.
+/// The opaque full-screen floor at `scene`'s size, in ms: the median time
+/// of one `invert` step (one texel fetch and one RGBA16F write a pixel) of
+/// a chain drawn after the scene.
+pub fn full_screen_ms(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<f64> {
     let mut probe = scene.clone();
+    // The step's time does not depend on what the image shows: no lights,
+    // so that the frames around it are quick.
+    probe.lights.clear();
     probe.post = chain(&[
         toml::from_str("pass = \"invert\"")?,
         toml::from_str("pass = \"gamma\"")?,
     ])?;
-    let step_ms = post_times(ctx, args, &probe)?
+    Ok(post_times(ctx, args, &probe)?
         .into_iter()
         .find(|t| t.name == "invert")
-        .map_or(0.0, |t| t.ms);
+        .map_or(0.0, |t| t.ms))
+}
+
+/// The table: each post pass's time, its floor and the ratio, then the
+/// whole chain's.
+pub fn floor_table(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<String> {
+    let (w, h) = scene.render.size;
+    let step_ms = full_screen_ms(ctx, args, scene)?;
     let full = f64::from(w) * f64::from(h);
     let mut s = format!(
         "post chain at {w}x{h}: opaque full-screen rate {:.1} Mpixel/s (one invert step: {step_ms:.2} ms)\n",

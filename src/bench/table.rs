@@ -31,6 +31,9 @@ pub struct BenchRow {
     pub max_abs: f64,
     /// Percentage (`0..=100`) of pixels with any channel off by more than 1/255.
     pub pct_over_1: f64,
+    /// The far field's analytic error bound (src/bench/bound.rs), where the
+    /// setting has one.
+    pub bound: Option<super::bound::FrameBound>,
     /// For a scene whose lights cast: its shadows against the exact ones
     /// (src/bench/shadows.rs).
     pub shadow: Option<crate::image_compare::shadow_metrics::ShadowErrors>,
@@ -131,6 +134,12 @@ pub fn table(rows: &[BenchRow]) -> String {
     for h in ["speed-up", "RMSE×255", "max×255", "% >1/255"] {
         header.push((h.into(), true));
     }
+    let any_bound = rows.iter().any(|r| r.bound.is_some());
+    if any_bound {
+        for h in ["bound max×255", "bound %>1/255"] {
+            header.push((h.into(), true));
+        }
+    }
     let any_shadow = rows.iter().any(|r| r.shadow.is_some());
     if any_shadow {
         for h in ["misclass %", "acne %", "gap"] {
@@ -171,6 +180,11 @@ pub fn table(rows: &[BenchRow]) -> String {
             cells.push(num(r.rmse * 255.0, 3));
             cells.push(num(r.max_abs * 255.0, 1));
             cells.push(num(r.pct_over_1, 3));
+            if any_bound {
+                let b = r.bound.as_ref();
+                cells.push(b.map_or_else(|| DASH.into(), |b| num(b.max * 255.0, 1)));
+                cells.push(b.map_or_else(|| DASH.into(), |b| num(b.pct_over_1, 3)));
+            }
             if any_shadow {
                 let s = r.shadow.as_ref();
                 cells.push(s.map_or_else(|| DASH.into(), |s| num(s.misclassified * 100.0, 3)));
@@ -254,6 +268,7 @@ pub(super) mod tests {
             rmse,
             max_abs: rmse * 4.0,
             pct_over_1: rmse * 1000.0,
+            bound: None,
             shadow: None,
         };
         let mut v = vec![

@@ -303,8 +303,10 @@ fn tiles_of_box(
 }
 
 /// `bin`, coarsening the grid (tiles twice as wide, half the slices) until
-/// the lists fit in `max_texels` (GL_MAX_TEXTURE_BUFFER_SIZE): always ends,
-/// at worst with one cluster that lists every light. Returns the grid used.
+/// the lists fit in `max_texels` (GL_MAX_TEXTURE_BUFFER_SIZE) as tiled
+/// shading uploads them: every cluster's (offset, count), two texels, then
+/// the light numbers, in one buffer. Always ends, at worst with one cluster
+/// that lists every light. Returns the grid used.
 pub fn bin_within(
     grid: &Grid,
     view: Mat4,
@@ -316,7 +318,7 @@ pub fn bin_within(
     let mut g = *grid;
     loop {
         let bins = bin(&g, view, projection, size, bounds);
-        let fits = bins.indices.len().max(bins.clusters.len()) <= max_texels;
+        let fits = 2 * bins.clusters.len() + bins.indices.len() <= max_texels;
         let coarsest = g.tiles == (1, 1) && g.slices == 1;
         if fits || coarsest {
             return (g, bins);

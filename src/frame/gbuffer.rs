@@ -8,7 +8,7 @@
 //! | 0          | RGBA16F          | world normal (unit) and shininess       |
 //! | 1          | SRGB8_ALPHA8     | diffuse albedo (stored sRGB, read linear) |
 //! | 2          | SRGB8_ALPHA8     | specular colour                         |
-//! | depth      | DEPTH24_STENCIL8 | depth (position is rebuilt from it) and the stencil the light volumes may use |
+//! | depth      | DEPTH_COMPONENT24 | depth (position is rebuilt from it); DEPTH24_STENCIL8 when the stencil light volumes use its stencil |
 //!
 //! Notes 03 stores `(normal + 1) / 2` in 8 bits; a 16-bit float keeps the
 //! normal to about 1e-3 instead of 4e-3, which is what keeps deferred within
@@ -25,13 +25,35 @@ use glow::HasContext;
 pub const NORMAL: (&str, u32) = ("normal_shininess", glow::RGBA16F);
 pub const ALBEDO: (&str, u32) = ("albedo", glow::SRGB8_ALPHA8);
 pub const SPECULAR: (&str, u32) = ("specular", glow::SRGB8_ALPHA8);
-pub const DEPTH: u32 = glow::DEPTH24_STENCIL8;
+
+/// The G-buffer's depth format: with a stencil only when something needs
+/// it, otherwise it would be a stencil allocated and cleared every frame for
+/// nothing. The two-sided stencil light volumes (notes 05) mark pixels in it;
+/// the light pre-pass copies its depth into the output, which has a stencil
+/// (a blit copies only between equal depth formats, GL 3.3 §4.3.2). The
+/// light accumulation target that copies this depth (light_volumes.rs
+/// `copy_depth`) uses the same format for the same reason.
+pub fn depth_format(scene: &crate::scene::Scene) -> u32 {
+    use crate::scene::RenderPath;
+    let stencil_volumes = scene.render.path == RenderPath::Volumes && scene.render.stencil_volumes;
+    if stencil_volumes || scene.render.path == RenderPath::Prepass {
+        glow::DEPTH24_STENCIL8
+    } else {
+        glow::DEPTH_COMPONENT24
+    }
+}
+
+/// Whether a depth format has a stencil.
+pub fn has_stencil(format: u32) -> bool {
+    matches!(format, glow::DEPTH24_STENCIL8 | glow::DEPTH32F_STENCIL8)
+}
 
 /// The target name every deferred pass finds the G-buffer by.
 pub const NAME: &str = "gbuffer";
 
-/// The full G-buffer, or the thin one of the light pre-pass.
-pub fn target(thin: bool) -> TargetDesc {
+/// The full G-buffer, or the thin one of the light pre-pass, with depth in
+/// `depth` (`depth_format`).
+pub fn target(thin: bool, depth: u32) -> TargetDesc {
     TargetDesc {
         name: NAME,
         samples: 1,
@@ -40,9 +62,10 @@ pub fn target(thin: bool) -> TargetDesc {
         } else {
             vec![NORMAL, ALBEDO, SPECULAR]
         },
-        depth: Depth::Own(DEPTH),
+        depth: Depth::Own(depth),
         ping_pong: false,
         mips: None,
+        downscale: 1,
     }
 }
 

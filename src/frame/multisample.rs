@@ -52,6 +52,7 @@ pub fn target(scene: &Scene) -> Option<TargetDesc> {
         depth: Depth::Own(glow::DEPTH24_STENCIL8),
         ping_pong: false,
         mips: None,
+        downscale: 1,
     })
 }
 

@@ -39,6 +39,11 @@ pub struct Pass {
     /// The mip level of its target it draws into (0: the full-size image;
     /// bloom's blurs draw into levels 1-4).
     pub level: u32,
+    /// Whether it needs its target's depth-stencil buffer. Every pass that
+    /// draws geometry does; the deferred composite, one triangle over every
+    /// pixel, does not (it copies the G-buffer's depth only for the passes
+    /// that come after it). A world image no pass needs depth from has none.
+    pub needs_depth: bool,
 }
 
 impl Pass {
@@ -60,6 +65,15 @@ impl Pass {
             item: 0,
             value: 0,
             level: 0,
+            needs_depth: true,
+        }
+    }
+
+    /// The same pass, needing no depth-stencil buffer in its target.
+    pub fn without_depth(self) -> Pass {
+        Pass {
+            needs_depth: false,
+            ..self
         }
     }
 
@@ -205,7 +219,12 @@ impl FramePlan {
                 }
             }
         }
-        targets.extend(post::targets(scene));
+        // The world image carries a depth-stencil buffer only when a pass
+        // drawing into it needs one: a deferred frame that ends with the
+        // composite has no use for it (its depth is the G-buffer's).
+        let world = [post::world_target(scene), post::world_image(scene)];
+        let world_depth = (passes.iter()).any(|p| world.contains(&p.target) && p.needs_depth);
+        targets.extend(post::targets(scene, world_depth));
         let srgb_gamma =
             (scene.post.last()).is_some_and(|p| matches!(p, PostPass::Gamma { srgb: true, .. }));
         let format = if srgb_gamma {
@@ -213,7 +232,10 @@ impl FramePlan {
         } else {
             glow::RGBA8
         };
-        targets.push(TargetDesc::output(format, scene.post.is_empty()));
+        targets.push(TargetDesc::output(
+            format,
+            scene.post.is_empty() && world_depth,
+        ));
         FramePlan {
             path: scene.render.path,
             targets,

@@ -132,8 +132,10 @@ pub fn writes(scene: &Scene, s: usize) -> Image {
 
 /// The targets the chain needs besides the output: `HDR`, and the
 /// ping-pong pair or one framebuffer per inner step. A chain of one step
-/// needs neither. Every one is frame-sized and RGBA16F.
-pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
+/// needs neither. Every one is frame-sized and RGBA16F. `HDR` is the world
+/// image: it has a depth-stencil buffer when `world_depth` (a pass drawing
+/// into it needs one, src/frame/plan.rs).
+pub fn targets(scene: &Scene, world_depth: bool) -> Vec<TargetDesc> {
     let steps = step_count(scene);
     if steps == 0 {
         return vec![];
@@ -142,9 +144,14 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
         name: HDR,
         samples: 1,
         colors: vec![("color", HDR_FORMAT)],
-        depth: Depth::Own(glow::DEPTH24_STENCIL8),
+        depth: if world_depth {
+            Depth::Own(glow::DEPTH24_STENCIL8)
+        } else {
+            Depth::None
+        },
         ping_pong: false,
         mips: None,
+        downscale: 1,
     }];
     match scene.render.post_chain {
         ChainForm::PingPong if steps > 1 => v.push(TargetDesc {
@@ -154,6 +161,7 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
             depth: Depth::None,
             ping_pong: true,
             mips: None,
+            downscale: 1,
         }),
         ChainForm::PingPong => {}
         ChainForm::Cascaded => v.extend(CASCADE[..steps - 1].iter().map(|&name| TargetDesc {
@@ -163,6 +171,7 @@ pub fn targets(scene: &Scene) -> Vec<TargetDesc> {
             depth: Depth::None,
             ping_pong: false,
             mips: None,
+            downscale: 1,
         })),
     }
     v
@@ -209,7 +218,8 @@ pub fn image_name(targets: &[TargetDesc], image: Image) -> String {
 /// "reads hdr, writes post_ping_pong.ping": what step `s` of `scene`'s chain
 /// samples and where it draws, for the plan.
 pub fn describe(scene: &Scene, s: usize) -> String {
-    let t = targets(scene);
+    // Names only: whether HDR has depth does not change them.
+    let t = targets(scene, false);
     format!(
         "reads {}, writes {}",
         image_name(&t, reads(scene, s)),

@@ -46,6 +46,9 @@ pub struct TargetDesc {
     /// frame has level 1 only, a 1x1 frame none (then there is no target).
     /// None: one level, the frame size.
     pub mips: Option<(u32, u32)>,
+    /// 1: the frame size; k: 1/k of it each way, rounded up (the far
+    /// field, tiled_shading's low-resolution pass). Not with `mips`.
+    pub downscale: u32,
 }
 
 impl TargetDesc {
@@ -65,6 +68,7 @@ impl TargetDesc {
             },
             ping_pong: false,
             mips: None,
+            downscale: 1,
         }
     }
 
@@ -81,7 +85,10 @@ impl TargetDesc {
                     w as u64 * h as u64
                 })
                 .sum(),
-            None => u64::from(width) * u64::from(height),
+            None => {
+                let (w, h) = scaled_size(width as i32, height as i32, self.downscale);
+                w as u64 * h as u64
+            }
         };
         let colors: u64 = self.colors.iter().map(|&(_, f)| bytes_per_pixel(f)).sum();
         let depth = match self.depth {
@@ -100,7 +107,10 @@ impl TargetDesc {
             .collect();
         match self.depth {
             Depth::None => {}
-            Depth::Own(f) => v.push(format!("depth_stencil:{}", format_name(f))),
+            Depth::Own(f @ (glow::DEPTH24_STENCIL8 | glow::DEPTH32F_STENCIL8)) => {
+                v.push(format!("depth_stencil:{}", format_name(f)))
+            }
+            Depth::Own(f) => v.push(format!("depth:{}", format_name(f))),
             Depth::SharedWith(t) => v.push(format!("depth_stencil:{t}'s")),
         }
         if let Some((first, last)) = self.mips {
@@ -109,8 +119,17 @@ impl TargetDesc {
         if self.samples > 1 {
             v.push(format!("{} samples", self.samples));
         }
+        if self.downscale > 1 {
+            v.push(format!("1/{} of the frame each way", self.downscale));
+        }
         v
     }
+}
+
+/// `width` x `height` divided by `k` each way, rounded up (at least 1x1).
+pub fn scaled_size(width: i32, height: i32, k: u32) -> (i32, i32) {
+    let k = k.max(1) as i32;
+    (((width + k - 1) / k).max(1), ((height + k - 1) / k).max(1))
 }
 
 /// The bytes a pixel of an internal format gloss uses takes.
@@ -204,6 +223,7 @@ impl Targets {
                 continue;
             }
             let samples = allowed_samples(gl, d)?;
+            let (width, height) = scaled_size(width, height, d.downscale);
             let texture = |format| match samples {
                 1 => Texture::render_target(gl, width, height, format),
                 n => Texture::render_target_multisample(gl, width, height, format, n),
@@ -280,6 +300,7 @@ mod tests {
             depth,
             ping_pong: false,
             mips: None,
+            downscale: 1,
         }
     }
 
@@ -312,6 +333,7 @@ mod tests {
         // (10x6, 5x3, 2x1).
         let mips = TargetDesc {
             mips: Some((1, 2)),
+            downscale: 1,
             ..target(vec![("color", glow::RGBA16F)], Depth::None)
         };
         assert_eq!(mips.bytes(10, 6), 8 * (60 + 15 + 2));

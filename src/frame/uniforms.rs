@@ -45,11 +45,15 @@ pub mod unit {
     /// The light pre-pass's specular light (`u_specular_light`).
     pub const SPECULAR_LIGHT: u32 = 5;
     /// Tiled shading's buffer textures (glsl/deferred/tiled_shading.frag):
-    /// the lights, each cluster's (offset, count), the light numbers. Units
-    /// 6-13 hold the shadow maps (src/frame/shadows.rs).
+    /// the lights, and each cluster's (offset, count) followed by the light
+    /// numbers. Units 6-13 hold the shadow maps (src/frame/shadows.rs).
     pub const TILED_LIGHTS: u32 = 4;
     pub const TILED_CLUSTERS: u32 = 5;
-    pub const TILED_INDICES: u32 = 14;
+    /// The far field's diffuse and specular light (glsl/common/far_field.glsl),
+    /// read by tiled shading: with the units above, all 16 that GL 3.3
+    /// promises a fragment shader are taken.
+    pub const FAR_DIFFUSE: u32 = 14;
+    pub const FAR_SPECULAR: u32 = 15;
     /// A post-chain step reads the previous image (`u_image`).
     pub const POST_INPUT: u32 = 0;
 }

@@ -1,5 +1,9 @@
-//! Meshes on the GPU: a VAO with one interleaved VBO (position, normal, uv,
-//! tangent at locations 0-3) and an EBO of u32 indices.
+//! Meshes on the GPU: a VAO with one interleaved VBO (position, normal, uv
+//! at locations 0-2, 32 bytes a vertex) and an EBO of u32 indices.
+//!
+//! The CPU mesh also has a tangent per vertex (geometry::Vertex), which no
+//! shader reads yet: it stays on the CPU, and the GPU vertex is 16 bytes
+//! smaller for it.
 
 use super::Gl;
 use crate::geometry::{MeshData, Vertex};
@@ -19,7 +23,14 @@ impl Mesh {
         if data.indices.is_empty() {
             bail!("mesh has no triangles");
         }
-        let stride = std::mem::size_of::<Vertex>() as i32;
+        // position, normal, uv: 8 floats.
+        let packed: Vec<[f32; 8]> = (data.vertices.iter())
+            .map(|v: &Vertex| {
+                let (p, n, t) = (v.position, v.normal, v.uv);
+                [p[0], p[1], p[2], n[0], n[1], n[2], t[0], t[1]]
+            })
+            .collect();
+        let stride = std::mem::size_of::<[f32; 8]>() as i32;
         unsafe {
             let vao = gl
                 .create_vertex_array()
@@ -35,11 +46,7 @@ impl Mesh {
             super::live::made(super::live::Kind::Buffer);
             gl.bind_vertex_array(Some(vao));
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
-            gl.buffer_data_u8_slice(
-                glow::ARRAY_BUFFER,
-                as_bytes(&data.vertices),
-                glow::STATIC_DRAW,
-            );
+            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&packed), glow::STATIC_DRAW);
             gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
             gl.buffer_data_u8_slice(
                 glow::ELEMENT_ARRAY_BUFFER,
@@ -47,7 +54,7 @@ impl Mesh {
                 glow::STATIC_DRAW,
             );
             // location, components, byte offset
-            for (loc, n, off) in [(0u32, 3, 0), (1, 3, 12), (2, 2, 24), (3, 4, 32)] {
+            for (loc, n, off) in [(0u32, 3, 0), (1, 3, 12), (2, 2, 24)] {
                 gl.enable_vertex_attrib_array(loc);
                 gl.vertex_attrib_pointer_f32(loc, n, glow::FLOAT, false, stride, off);
             }

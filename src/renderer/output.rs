@@ -71,15 +71,41 @@ impl Renderer {
 
     /// The finished frame's window depth, 0..1, bottom row first (what
     /// glReadPixels gives): the shadow tests find each pixel's surface
-    /// point from it.
+    /// point from it. A deferred frame whose world image has no depth
+    /// buffer (nothing after the composite needs one) gives the G-buffer's,
+    /// which the composite would have copied.
     pub fn read_depth(&self) -> Vec<f32> {
-        self.world().read_depth_f32()
+        match self.depth_source() {
+            Some(fb) => fb.read_depth_f32(),
+            None => vec![1.0; (self.width * self.height) as usize],
+        }
+    }
+
+    /// Where the frame's depth is: the world image's depth buffer, else
+    /// the G-buffer's; None when neither exists (a frame with nothing).
+    fn depth_source(&self) -> Option<&crate::gl::framebuffer::Framebuffer> {
+        let has = |fb: &crate::gl::framebuffer::Framebuffer| {
+            fb.depth_stencil.is_some() || fb.shared_depth.is_some()
+        };
+        let world = self.world();
+        if has(world) {
+            return Some(world);
+        }
+        self.targets
+            .find(crate::frame::gbuffer::NAME)
+            .filter(|g| has(g))
     }
 
     /// The output's stencil buffer, one value per pixel, top row first
     /// (the stencil inspector; mirrors mark their regions there).
+    /// A world image without a depth-stencil buffer (a deferred frame with
+    /// no pass after the composite) has marked nothing: all 0.
     pub fn read_stencil(&self) -> Vec<u8> {
-        self.world().read_stencil_top_down()
+        let world = self.world();
+        if world.depth_stencil.is_none() && world.shared_depth.is_none() {
+            return vec![0; (self.width * self.height) as usize];
+        }
+        world.read_stencil_top_down()
     }
 
     /// Render a frame and return the output's stencil buffer as it was
@@ -98,6 +124,11 @@ impl Renderer {
         }
         let (gl, fb) = (self.gl.clone(), self.world().id);
         let (w, h) = (self.width, self.height);
+        let world = self.world();
+        if world.depth_stencil.is_none() && world.shared_depth.is_none() {
+            // No stencil buffer in this frame's world image: nothing marked.
+            return Ok(vec![0; (w * h) as usize]);
+        }
         let (mut n, mut stencil) = (0, Vec::new());
         self.render_inspected(camera, &mut |_| {
             n += 1;

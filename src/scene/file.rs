@@ -87,6 +87,7 @@ pub(super) struct RenderFile {
     pub(super) deferred_lights: DeferredLights,
     pub(super) tile_size: u32,
     pub(super) depth_slices: u32,
+    pub(super) far_field: u32,
     pub(super) mirror_order: MirrorOrder,
     /// How many mirrors deep reflections go (1: mirrors seen in a mirror are blank).
     pub(super) mirror_depth: u32,
@@ -117,6 +118,7 @@ impl Default for RenderFile {
             deferred_lights: DeferredLights::PerLight,
             tile_size: 16,
             depth_slices: 16,
+            far_field: 0,
             mirror_order: MirrorOrder::NormalFirst,
             mirror_depth: 1,
             mirror_clip: true,

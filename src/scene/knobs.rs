@@ -185,6 +185,22 @@ pub static TILE_SIZE: Knob = Knob {
     },
 };
 
+pub static FAR_FIELD: Knob = Knob {
+    key: "render.far_field",
+    label: "far field",
+    help: "tiled shading: 0 stops each light at its cutoff radius; k adds the light beyond half that radius from a far field sampled once per k x k pixels",
+    kind: Kind::Count {
+        min: 0,
+        max: *super::resolve::FAR_FIELD_SCALES.end(),
+    },
+    get: |r| Value::Count(r.far_field),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.far_field = n;
+        }
+    },
+};
+
 pub static DEPTH_SLICES: Knob = Knob {
     key: "render.depth_slices",
     label: "depth slices",
@@ -361,6 +377,7 @@ pub static ALL: &[&Knob] = &[
     &ACCUMULATION,
     &DEFERRED_LIGHTS,
     &TILE_SIZE,
+    &FAR_FIELD,
     &DEPTH_SLICES,
     &AMBIENT,
     &BACKGROUND,

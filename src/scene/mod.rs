@@ -108,6 +108,13 @@ pub struct RenderSettings {
     /// slices cut the view (1: tiles only; more: clustered shading).
     pub tile_size: u32,
     pub depth_slices: u32,
+    /// Tiled shading: 0, every light stops at its cutoff radius; k, the light
+    /// beyond half that radius comes from a far field evaluated once per k x k
+    /// pixels (src/techniques/deferred/far_field.rs).
+    pub far_field: u32,
+    /// Not in the scene file: `gloss bench` sets it to render, instead of
+    /// the light, the far field's per-pixel error bound (far_field.rs).
+    pub far_field_bound: bool,
     /// Planar mirrors (notes 05): the order of their passes, how deep
     /// reflections recurse, the clip plane and the winding fix (toggles that
     /// show what goes wrong without them).

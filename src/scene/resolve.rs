@@ -32,6 +32,9 @@ pub const MAX_MIRROR_DEPTH: u32 = 8;
 
 /// The tile edges `render.tile_size` takes, in pixels.
 pub const TILE_SIZES: std::ops::RangeInclusive<u32> = 4..=256;
+/// The far-field scales `render.far_field` takes besides 0 (off): one
+/// sample per k x k pixels.
+pub const FAR_FIELD_SCALES: std::ops::RangeInclusive<u32> = 1..=32;
 /// The depth slices `render.depth_slices` takes (1: tiled, no slicing).
 pub const DEPTH_SLICES: std::ops::RangeInclusive<u32> = 1..=64;
 
@@ -142,6 +145,18 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             }
             r.tile_size
         },
+        far_field: {
+            if r.far_field != 0 && !FAR_FIELD_SCALES.contains(&r.far_field) {
+                bail!(
+                    "render.far_field: expected 0 (off) or one sample per k x k pixels, k in {}..={}, found {}",
+                    FAR_FIELD_SCALES.start(),
+                    FAR_FIELD_SCALES.end(),
+                    r.far_field
+                );
+            }
+            r.far_field
+        },
+        far_field_bound: false,
         depth_slices: {
             if !(DEPTH_SLICES).contains(&r.depth_slices) {
                 bail!(

@@ -104,6 +104,7 @@ impl Scene {
                 r.depth_slices != 16,
                 r.depth_slices.to_string(),
             ),
+            ("far_field", r.far_field != 0, r.far_field.to_string()),
         ] {
             warn(
                 key,

@@ -31,6 +31,7 @@ pub static ALL: &[&Technique] = &[
     &deferred::deferred_shading::DEFERRED_SHADING,
     &deferred::light_volumes::LIGHT_VOLUMES,
     &deferred::stencil_light_volumes::STENCIL_LIGHT_VOLUMES,
+    &deferred::far_field::FAR_FIELD,
     &deferred::tiled_shading::TILED_SHADING,
     &deferred::deferred_lighting::DEFERRED_LIGHTING,
     &deferred::composite::COMPOSITE,

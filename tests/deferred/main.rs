@@ -17,6 +17,8 @@
 //!   and slice count (both summed in RGBA32F: within 1/255); with a tiny
 //!   cutoff, == forward within the deferred bound; 10,000 lights == the sum
 //!   of their parts.
+//! * tiled shading with the far field: one sample per pixel == forward within
+//!   the deferred bound; one per 4x4 or 8x8 pixels within FAR_BOUND.
 //!
 //! Every render runs with GL debug output on and fails on any GL error.
 
@@ -25,6 +27,7 @@ mod common;
 
 mod deferred_lighting;
 mod deferred_shading;
+mod far_field;
 mod light_volumes;
 mod numeric_edges;
 mod numeric_sweep;

@@ -421,3 +421,16 @@ fn scene_object_scaled_past_the_world() {
         ],
     );
 }
+
+#[test]
+fn scene_far_field_scale_out_of_range() {
+    let text = base_with(
+        "size = [32, 24]",
+        "size = [32, 24]\npath = \"tiled\"\nfar_field = 33",
+    );
+    scene_fails(
+        "scene_far_field_scale_out_of_range",
+        &text,
+        &["render.far_field", "expected 0 (off)", "1..=32", "found 33"],
+    );
+}

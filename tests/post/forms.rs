@@ -105,14 +105,25 @@ fn the_feedback_check_catches_the_both_attached_ping_pong() {
 #[test]
 fn the_chain_allocates_only_the_targets_its_steps_need() {
     let names = |s: &Scene| -> Vec<&str> { plan(s).targets.iter().map(|t| t.name).collect() };
-    // No chain: no hdr, no post targets; the output has its depth.
+    // No chain: no hdr, no post targets. The output has a depth buffer
+    // where a pass needs it (forward), none where the deferred composite
+    // ends the frame.
     let none = common::scene("deferred-shading.toml");
     assert!(
         !names(&none)
             .iter()
             .any(|n| *n == HDR || n.starts_with("post"))
     );
-    assert!(plan(&none).target("output").unwrap().attachments().len() == 2);
+    assert_eq!(
+        plan(&none).target("output").unwrap().attachments(),
+        ["color:RGBA8"]
+    );
+    let mut forward = none.clone();
+    forward.render.path = gloss::scene::RenderPath::Forward;
+    assert_eq!(
+        plan(&forward).target("output").unwrap().attachments(),
+        ["color:RGBA8", "depth_stencil:DEPTH24_STENCIL8"]
+    );
     // Gamma alone: one step from hdr to the output, nothing between.
     let one = chain_scene("[[post]]\npass = \"gamma\"\n");
     assert_eq!(step_count(&one), 1);

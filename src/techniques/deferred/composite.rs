@@ -10,8 +10,11 @@
 //! into a mirror (stencil/mirror.rs) it writes only inside the mirror's
 //! stencil region, and only where nothing nearer is there already.
 //!
-//! GL state: depth test GL_ALWAYS (one triangle covers every pixel exactly
-//! once, notes 02), or GL_LEQUAL and the stencil test for a reflected view;
+//! GL state: with a depth buffer in the output, depth test GL_ALWAYS (one
+//! triangle covers every pixel exactly once, notes 02), or GL_LEQUAL and the
+//! stencil test for a reflected view; without one (nothing after the
+//! composite tests depth, `gloss plan` shows it), no depth test and a
+//! shader that writes colour only;
 //! textures on the G-buffer units and unit::LIGHT, unbound after; restores
 //! no depth or stencil test, GL_LESS.
 
@@ -46,16 +49,19 @@ pub const COMPOSITE: Technique = Technique {
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     match scene.render.path {
-        RenderPath::Deferred | RenderPath::Volumes | RenderPath::Tiled => vec![Pass::new(
-            "composite",
-            world_target(scene),
-            if scene.post.is_empty() {
-                "1 full-screen triangle (ambient + light, sRGB encode)".into()
-            } else {
-                "1 full-screen triangle (ambient + light, linear: a post chain follows)".into()
-            },
-            file!(),
-        )],
+        RenderPath::Deferred | RenderPath::Volumes | RenderPath::Tiled => vec![
+            Pass::new(
+                "composite",
+                world_target(scene),
+                if scene.post.is_empty() {
+                    "1 full-screen triangle (ambient + light, sRGB encode)".into()
+                } else {
+                    "1 full-screen triangle (ambient + light, linear: a post chain follows)".into()
+                },
+                file!(),
+            )
+            .without_depth(),
+        ],
         RenderPath::Forward | RenderPath::Prepass => vec![],
     }
 }
@@ -65,34 +71,50 @@ fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
 }
 
 struct Composite {
-    program: Program,
+    /// Writes the G-buffer's depth into the output (gl_FragDepth), for the
+    /// passes that draw after it.
+    with_depth: Program,
+    /// Colour only: the output has no depth buffer (nothing after the
+    /// composite tests depth). A shader that writes gl_FragDepth costs more
+    /// per pixel even when its depth goes nowhere, so this is its own program.
+    colour_only: Program,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    let stages = [
+        (glow::VERTEX_SHADER, "common/fullscreen.vert"),
+        (glow::FRAGMENT_SHADER, "deferred/composite.frag"),
+    ];
     Ok(Box::new(Composite {
-        program: p.build(&[
-            (glow::VERTEX_SHADER, "common/fullscreen.vert"),
-            (glow::FRAGMENT_SHADER, "deferred/composite.frag"),
-        ])?,
+        with_depth: p.build_with(&stages, &[("WRITE_DEPTH", "1".into())])?,
+        colour_only: p.build(&stages)?,
     }))
 }
 
 impl RunPasses for Composite {
     fn run(&self, _: &Pass, f: &Frame) {
-        let (gl, p, u) = (f.gl, &self.program, f.uniforms);
         let output = f.targets.get(world_target(f.scene));
+        let depth = output.depth_stencil.is_some() || output.shared_depth.is_some();
+        let p = if depth {
+            &self.with_depth
+        } else {
+            &self.colour_only
+        };
+        let (gl, u) = (f.gl, f.uniforms);
         // A frame with no lights has no lighting pass and no light to add.
         let light = f.targets.find(LIGHT_ACCUMULATION);
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
             let (x, y, w, h) = f.view.rect(output.width, output.height);
             gl.viewport(x, y, w, h);
-            gl.enable(glow::DEPTH_TEST);
-            gl.depth_mask(true);
-            if f.view.clears {
-                gl.depth_func(glow::ALWAYS);
-            } else {
-                gl.depth_func(glow::LEQUAL);
+            if depth {
+                gl.enable(glow::DEPTH_TEST);
+                gl.depth_mask(true);
+                if f.view.clears {
+                    gl.depth_func(glow::ALWAYS);
+                } else {
+                    gl.depth_func(glow::LEQUAL);
+                }
             }
             if let Some(region) = f.view.stencil {
                 gl.enable(glow::STENCIL_TEST);

@@ -93,9 +93,10 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
         name: LIGHT_ACCUMULATION,
         samples: 1,
         colors: vec![("diffuse_light", format), ("specular_light", format)],
-        depth: Depth::Own(gbuffer::DEPTH),
+        depth: Depth::Own(gbuffer::depth_format(scene)),
         ping_pong: false,
         mips: None,
+        downscale: 1,
     }]
 }
 

@@ -94,6 +94,7 @@ pub fn accumulation_target(scene: &Scene, depth: Depth) -> TargetDesc {
         depth,
         ping_pong: false,
         mips: None,
+        downscale: 1,
     }
 }
 

@@ -66,7 +66,10 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
 }
 
 fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
-    layout(scene).map(gbuffer::target).into_iter().collect()
+    let depth = gbuffer::depth_format(scene);
+    (layout(scene).map(|thin| gbuffer::target(thin, depth)))
+        .into_iter()
+        .collect()
 }
 
 struct GBufferPass {
@@ -94,7 +97,14 @@ impl RunPasses for GBufferPass {
             gl.enable(glow::DEPTH_TEST);
             gl.depth_func(f.scene.render.depth_func.gl());
             gl.depth_mask(true);
-            gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT | glow::STENCIL_BUFFER_BIT);
+            let depth = target.depth_stencil.as_ref().map(|d| d.internal_format);
+            if depth.is_some_and(gbuffer::has_stencil) {
+                gl.clear(
+                    glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT | glow::STENCIL_BUFFER_BIT,
+                );
+            } else {
+                gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
+            }
             gl.enable(glow::CULL_FACE);
             gl.cull_face(glow::BACK);
             // Linear albedo and specular are encoded to sRGB as they are stored.

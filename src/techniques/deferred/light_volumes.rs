@@ -84,7 +84,10 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
     if !runs(scene, lights) {
         return vec![];
     }
-    vec![accumulation_target(scene, Depth::Own(gbuffer::DEPTH))]
+    vec![accumulation_target(
+        scene,
+        Depth::Own(gbuffer::depth_format(scene)),
+    )]
 }
 
 /// "2 spheres + 3 cones + 1 full-screen triangles (1 with no finite radius)".
@@ -175,26 +178,21 @@ pub fn volume_pass(f: &Frame, p: &Program, draw_volumes: fn(&Frame, &Program)) {
     }
 }
 
-/// Copy the G-buffer's depth (and stencil, cleared to 0 by the G-buffer
-/// pass) into `target`'s own depth-stencil: the volumes are tested against
-/// the copy while the shader reads the original.
+/// Copy the G-buffer's depth (and its stencil, cleared to 0 by the G-buffer
+/// pass, when it has one) into `target`'s own depth buffer: the volumes are
+/// tested against the copy while the shader reads the original.
 pub fn copy_depth(gl: &glow::Context, gbuf: &Framebuffer, target: &Framebuffer) {
     let (w, h) = (gbuf.width, gbuf.height);
+    let format = gbuf.depth_stencil.as_ref().map(|d| d.internal_format);
+    let mask = if format.is_some_and(gbuffer::has_stencil) {
+        glow::DEPTH_BUFFER_BIT | glow::STENCIL_BUFFER_BIT
+    } else {
+        glow::DEPTH_BUFFER_BIT
+    };
     unsafe {
         gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(gbuf.id));
         gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, Some(target.id));
-        gl.blit_framebuffer(
-            0,
-            0,
-            w,
-            h,
-            0,
-            0,
-            w,
-            h,
-            glow::DEPTH_BUFFER_BIT | glow::STENCIL_BUFFER_BIT,
-            glow::NEAREST,
-        );
+        gl.blit_framebuffer(0, 0, w, h, 0, 0, w, h, mask, glow::NEAREST);
         gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
         gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, None);
     }

@@ -9,11 +9,12 @@
 //! | deferred | gbuffer.rs       | deferred_shading.rs (full screen)      | composite.rs         |
 //! | volumes  | gbuffer.rs       | light_volumes.rs / stencil_light_volumes.rs | composite.rs    |
 //! | prepass  | gbuffer.rs, thin | deferred_lighting.rs (volumes)         | deferred_lighting.rs |
-//! | tiled    | gbuffer.rs       | tiled_shading.rs (lights binned per tile) | composite.rs      |
+//! | tiled    | gbuffer.rs       | tiled_shading.rs (lights binned per tile), far_field.rs (the tails, at low resolution) | composite.rs |
 
 pub mod composite;
 pub mod deferred_lighting;
 pub mod deferred_shading;
+pub mod far_field;
 pub mod gbuffer;
 pub mod light_volumes;
 pub mod stencil_light_volumes;

@@ -73,7 +73,10 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
     if !runs(scene, lights) {
         return vec![];
     }
-    vec![accumulation_target(scene, Depth::Own(gbuffer::DEPTH))]
+    vec![accumulation_target(
+        scene,
+        Depth::Own(gbuffer::depth_format(scene)),
+    )]
 }
 
 struct StencilLightVolumes {

@@ -17,10 +17,10 @@
 //!    shaded everywhere too, in a loop of their own, the only one that
 //!    samples shadow maps (the shader says why).
 //! 2. Upload, through buffer textures (src/gl/texture_buffer.rs): every
-//!    light (four RGBA32F texels each, the std140 `Light`), each cluster's
-//!    (offset, count), and the light numbers. A uniform block would stop at
-//!    256 lights on the smallest GL 3.3; a buffer texture holds 16384 even
-//!    there.
+//!    light (four RGBA32F texels each, the std140 `Light`), and in one R32UI
+//!    buffer each cluster's (offset, count) followed by the light numbers.
+//!    A uniform block would stop at 256 lights on the smallest GL 3.3; a
+//!    buffer texture holds 16384 even there.
 //! 3. One full-screen triangle: each pixel finds its tile from
 //!    gl_FragCoord, its slice from its depth, and loops over the global
 //!    lights and its cluster's list (glsl/deferred/tiled_shading.frag),
@@ -45,6 +45,7 @@ use crate::gl::texture_buffer::{TextureBuffer, max_texels};
 use crate::scene::knobs;
 use crate::scene::{Light, LightKind, RenderPath, Scene};
 use crate::techniques::deferred::deferred_shading::accumulation_target;
+use crate::techniques::deferred::far_field;
 use anyhow::Result;
 use glam::{Mat4, Vec3};
 use glow::HasContext;
@@ -60,6 +61,7 @@ pub const TILED_SHADING: Technique = Technique {
         &knobs::CUTOFF,
         &knobs::TILE_SIZE,
         &knobs::DEPTH_SLICES,
+        &knobs::FAR_FIELD,
         &knobs::ACCUMULATION,
     ],
     passes,
@@ -149,25 +151,39 @@ pub fn light_bounds(scene: &Scene, lights: &FrameLights, casting: &[usize]) -> V
 
 struct TiledShading {
     program: Program,
+    /// With `far_field.rs`'s far part added (`render.far_field` > 0).
+    with_far_field: Program,
+    /// Drawing the far field's error bound instead of the light
+    /// (`render.far_field_bound`, set by `gloss bench`).
+    far_field_bound: Program,
     lights: TextureBuffer,
+    /// Each cluster's (offset, count), then the light numbers.
     clusters: TextureBuffer,
-    indices: TextureBuffer,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let program = p.build(&[
+    let stages = [
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (glow::FRAGMENT_SHADER, "deferred/tiled_shading.frag"),
-    ])?;
-    // shadow_visibility reads the caster from the Lights block (the casters
-    // are among the lights the block holds: check_lights_fit).
-    program.bind_uniform_block("Lights", LIGHTS_BINDING);
-    shadows::setup_program(&program);
+    ];
+    let program = p.build(&stages)?;
+    let with_far_field = p.build_with(&stages, &[("FAR_FIELD", "1".into())])?;
+    let far_field_bound = p.build_with(
+        &stages,
+        &[("FAR_FIELD", "1".into()), ("FAR_FIELD_BOUND", "1".into())],
+    )?;
+    for program in [&program, &with_far_field, &far_field_bound] {
+        // shadow_visibility reads the caster from the Lights block (the
+        // casters are among the lights the block holds: check_lights_fit).
+        program.bind_uniform_block("Lights", LIGHTS_BINDING);
+        shadows::setup_program(program);
+    }
     Ok(Box::new(TiledShading {
         program,
+        with_far_field,
+        far_field_bound,
         lights: TextureBuffer::new(p.gl, glow::RGBA32F)?,
-        clusters: TextureBuffer::new(p.gl, glow::RG32UI)?,
-        indices: TextureBuffer::new(p.gl, glow::R32UI)?,
+        clusters: TextureBuffer::new(p.gl, glow::R32UI)?,
     }))
 }
 
@@ -199,15 +215,19 @@ impl RunPasses for TiledShading {
 
         // 2. Upload the lights and the lists.
         self.lights.write(&f.lights.pack(f.scene));
-        let cluster_bytes: Vec<u8> = (bins.clusters.iter().flatten())
+        let lists: Vec<u8> = (bins.clusters.iter().flatten())
+            .chain(&bins.indices)
             .flat_map(|v| v.to_ne_bytes())
             .collect();
-        self.clusters.write(&cluster_bytes);
-        let index_bytes: Vec<u8> = bins.indices.iter().flat_map(|v| v.to_ne_bytes()).collect();
-        self.indices.write(&index_bytes);
+        self.clusters.write(&lists);
 
         // 3. One full-screen pass over the G-buffer.
-        let p = &self.program;
+        let far = far_field::runs(f.scene, f.lights);
+        let p = match (far, f.scene.render.far_field_bound) {
+            (true, true) => &self.far_field_bound,
+            (true, false) => &self.with_far_field,
+            (false, _) => &self.program,
+        };
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
             gl.viewport(x, y, w, h);
@@ -221,7 +241,6 @@ impl RunPasses for TiledShading {
             for (name, unit, buffer) in [
                 ("u_light_data", unit::TILED_LIGHTS, &self.lights),
                 ("u_clusters", unit::TILED_CLUSTERS, &self.clusters),
-                ("u_light_index", unit::TILED_INDICES, &self.indices),
             ] {
                 gl.active_texture(glow::TEXTURE0 + unit);
                 gl.bind_texture(glow::TEXTURE_BUFFER, Some(buffer.texture));
@@ -229,7 +248,11 @@ impl RunPasses for TiledShading {
             }
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             p.set_mat4("u_view", &(u.view * f.view.reflection));
+            p.set_i32("u_index_base", 2 * bins.clusters.len() as i32);
             p.set_i32("u_global_count", bins.global as i32);
+            if far {
+                far_field::bind_for_reading(f, p);
+            }
             p.set_ivec3(
                 "u_grid",
                 glam::IVec3::new(grid.tiles.0 as i32, grid.tiles.1 as i32, grid.slices as i32),
@@ -242,12 +265,11 @@ impl RunPasses for TiledShading {
             f.meshes.fullscreen.draw();
 
             f.shadows.unbind(gl);
+            if far {
+                far_field::unbind_textures(gl);
+            }
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
-            for unit in [
-                unit::TILED_LIGHTS,
-                unit::TILED_CLUSTERS,
-                unit::TILED_INDICES,
-            ] {
+            for unit in [unit::TILED_LIGHTS, unit::TILED_CLUSTERS] {
                 gl.active_texture(glow::TEXTURE0 + unit);
                 gl.bind_texture(glow::TEXTURE_BUFFER, None);
             }

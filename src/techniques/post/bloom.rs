@@ -166,6 +166,7 @@ fn mip_target(name: &'static str, first: u32, last: u32) -> TargetDesc {
         depth: Depth::None,
         ping_pong: false,
         mips: Some((first, last)),
+        downscale: 1,
     }
 }
 

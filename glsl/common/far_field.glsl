@@ -1,0 +1,231 @@
+// The far field (src/techniques/deferred/far_field.rs): each light with a
+// radius is split in two by a weight that is 1 up to half its radius and
+// falls smoothly to 0 at the radius. Tiled shading shades the near part
+// (weight x light) from its cluster lists; the far part ((1 - weight) x
+// light), which varies slowly over a surface, is summed by the far-field
+// pass once per k x k pixels and interpolated here. The two parts add up to
+// the whole light: nothing is cut off.
+// Needs common/lighting.glsl, common/shadow.glsl, common/gbuffer_read.glsl
+// and common/light_buffer.glsl first.
+
+const float NEAR_INNER = 0.5;   // the near weight is 1 up to this fraction of the radius
+
+uniform sampler2D u_far_diffuse;   // far light, diffuse (not yet x k_d), one texel per sample
+uniform sampler2D u_far_specular;  // far light, specular (not yet x k_s)
+uniform int u_far_scale;           // k: one sample per k x k pixels
+uniform int u_light_count;
+uniform float u_far_reach;         // the farthest a sample's surface point may be from the pixel's
+uniform vec3 u_eye;
+
+float near_weight(float d, float radius) {
+    // A light never brighter than the cutoff has radius 0: all far.
+    if (radius <= 0.0) return 0.0;
+    return 1.0 - smoothstep(NEAR_INNER * radius, radius, d);
+}
+
+// The far part of every light with a radius and no shadow map, at surface s
+// seen along V: diffuse and specular apart, not yet multiplied by the material.
+void far_light(Surface s, vec3 V, out vec3 diffuse, out vec3 specular) {
+    diffuse = vec3(0.0);
+    specular = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+        Light light = light_at(i);
+        float radius = light.direction_radius.w;
+        if (radius < 0.0 || casts_shadow(i)) continue;
+        float far = 1.0 - near_weight(distance(s.P, light.position_type.xyz), radius);
+        if (far <= 0.0) continue;
+        vec3 d, sp;
+        phong_light(light, s.P, s.N, V, s.shininess, d, sp);
+        diffuse += far * d;
+        specular += far * sp;
+    }
+}
+
+// The G-buffer texel the far-field pass samples for its texel t (t counted
+// from the view's corner): the centre of t's k x k block, inside the view.
+ivec2 far_sample_texel(ivec2 t) {
+    ivec2 lo = ivec2(u_viewport.xy);
+    ivec2 hi = lo + ivec2(u_viewport.zw) - 1;
+    return clamp(lo + t * u_far_scale + u_far_scale / 2, lo, hi);
+}
+
+// The far-field texture's texel for sample t.
+ivec2 far_texel(ivec2 t) {
+    return ivec2(u_viewport.xy) / u_far_scale + t;
+}
+
+// Whether sample surface o can stand for surface s: on s's tangent plane
+// (within 1% of the distance to the eye), within u_far_reach of it, with
+// the same shininess, and its normal within an angle that moves the
+// specular lobe by at most 1%: the steepest slope of cos^n is about
+// sqrt(n / e) per radian, so 0.01 / sqrt(n / e + 1) radians (0.1 degrees at
+// n = 64). On a curved surface that fails for all but the nearest
+// neighbours, and the pixel sums its far part itself.
+bool same_surface(Surface s, Surface o, float eye_distance) {
+    float angle = 0.01 / sqrt(s.shininess / 2.718 + 1.0);
+    return o.depth < 1.0
+        && abs(dot(s.N, o.P - s.P)) <= 0.01 * eye_distance
+        && dot(s.N, o.N) >= 1.0 - 0.5 * angle * angle
+        && abs(o.shininess - s.shininess) <= 1e-3 * max(s.shininess, 1.0)
+        && distance(o.P, s.P) <= u_far_reach;
+}
+
+// This pixel's far light times its material: interpolated (bilinearly)
+// from those of the four samples around it that stand for its surface,
+// their weights renormalised; summed here over every light when none does.
+// `eye_distance`: from the eye to s.P.
+vec3 far_field(Surface s, vec3 V, float eye_distance) {
+    ivec2 grid = (ivec2(u_viewport.zw) + u_far_scale - 1) / u_far_scale;
+    vec2 q = (gl_FragCoord.xy - u_viewport.xy) / float(u_far_scale) - 0.5;
+    ivec2 t0 = ivec2(floor(q));
+    vec2 f = q - vec2(t0);
+    vec3 diffuse = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    float weight = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 corner = ivec2(k & 1, k >> 1);
+        ivec2 t = clamp(t0 + corner, ivec2(0), grid - 1);
+        if (!same_surface(s, read_geometry_texel(far_sample_texel(t)), eye_distance)) continue;
+        // Never quite 0: a sample that stands for the surface counts even
+        // where the bilinear weight vanishes.
+        float w = max((corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y), 1e-3);
+        diffuse += w * texelFetch(u_far_diffuse, far_texel(t), 0).rgb;
+        specular += w * texelFetch(u_far_specular, far_texel(t), 0).rgb;
+        weight += w;
+    }
+    if (weight > 0.0) {
+        diffuse /= weight;
+        specular /= weight;
+    } else {
+        far_light(s, V, diffuse, specular);
+    }
+    return s.kd * diffuse + s.ks * specular;
+}
+
+#ifdef FAR_FIELD_BOUND
+// The error bound (docs/deferred/far_field.md derives it). Drawn instead of
+// the light when `gloss bench` asks (render.far_field_bound): the far-field
+// pass then writes each sample's bound terms into its two targets, and
+// tiled shading writes each pixel's bound.
+//
+// A pixel takes its far part as a convex combination, weights w_k, of
+// samples at x_k on its own plane. Taylor about the pixel x: for each part
+// f, |sum w_k f(x_k) - f(x)| <= G |sum w_k (x_k - x)| + H/2 sum w_k |x_k - x|^2,
+// G and H bounds on |grad f| and |hessian f| over the ball of radius rho
+// around each sample that holds every pixel taking it. On a plane, a light
+// at height h above it adds diffuse c h S(d) att(d) / d and specular
+// c S(d) att(d) cos^n(theta_H) (S: the smoothstep of 1 - near_weight). With
+// a = the light's inner radius and d >= d_min = max(a, d_s - rho, h) over
+// the ball, the envelopes |att'| <= 2 att / d, |att''| <= 10 att / d^2,
+// |S'| <= 3 / d, |S''| <= 24 / d^2 (S changes only where d >= a), and for
+// the lobe |d cos^n / d theta| <= sqrt(n), |d^2 cos^n / d theta^2| <= n,
+// |grad theta_H| <= T1 = (1/d + 1/e) / m, |hessian theta_H| <= T2 =
+// (3/d^2 + 3/e^2) / m + 2 T1^2 (m: |L + V| less how far L and V turn over
+// the ball, e: the eye's distance less rho) give
+//   diffuse:  G_d = c 6 att / d,  H_d = c 64 att / d^2
+//   specular: G_s = c att (5 / d + S sqrt(n) T1),
+//             H_s = c att (46 / d^2 + 10 sqrt(n) T1 / d + S (n T1^2 + sqrt(n) T2))
+// (att at d_min, S at d_s + rho). A sample stores (H_d, G_d, H_s, G_s) and
+// (M, straddle, 0, 0): M the largest of its far values (for their RGBA16F
+// rounding), straddle 1 when a light lies within its own radius of the
+// plane, where N . L is not smooth.
+// RGBA16F holds at most 65504: a sum past it is no bound.
+const float TERM_LIMIT = 6e4;
+
+void far_bound_terms(Surface s, vec3 V, vec3 diffuse, vec3 specular, float rho,
+                     out vec4 terms, out vec4 extra) {
+    float e = max(distance(u_eye, s.P) - rho, 1e-6);
+    terms = vec4(0.0);
+    extra = vec4(0.0);
+    extra.x = max(diffuse.r, max(diffuse.g, diffuse.b)) + max(specular.r, max(specular.g, specular.b));
+    float n = s.shininess;
+    float rn = sqrt(n);
+    for (int i = 0; i < u_light_count; ++i) {
+        Light light = light_at(i);
+        float radius = light.direction_radius.w;
+        if (radius < 0.0 || casts_shadow(i)) continue;
+        vec3 p = light.position_type.xyz;
+        float h = dot(s.N, p - s.P);
+        if (h < -LIGHT_RADIUS) continue;   // below the plane: 0 all over it
+        if (h <= LIGHT_RADIUS) {
+            extra.y = 1.0;
+            continue;
+        }
+        float d_s = distance(p, s.P);
+        float a = NEAR_INNER * radius;
+        if (d_s + rho <= a) continue;      // inside the near part all over the ball
+        float d = max(max(a, d_s - rho), h);
+        vec3 k = light.atten_cos_inner.xyz;
+        float att = 1.0 / (k.x + k.y * d + k.z * d * d);
+        float S = 1.0 - near_weight(d_s + rho, radius);
+        vec3 rgb = light.color_cos_outer.rgb;
+        float c = max(rgb.r, max(rgb.g, rgb.b)) * att;
+        vec3 L = normalize(p - s.P);
+        float m = max(length(L + V) - rho / d - rho / e, 1e-4);
+        float t1 = (1.0 / d + 1.0 / e) / m;
+        float t2 = (3.0 / (d * d) + 3.0 / (e * e)) / m + 2.0 * t1 * t1;
+        terms.x += c * 64.0 / (d * d);
+        terms.y += c * 6.0 / d;
+        terms.z += c * (46.0 / (d * d) + 10.0 * rn * t1 / d + S * (n * t1 * t1 + rn * t2));
+        terms.w += c * (5.0 / d + S * rn * t1);
+    }
+    terms = min(terms, vec4(TERM_LIMIT));
+}
+
+// The farthest surface point, from sample t's (surface o), of the pixels
+// that take their far part from t: those within 1.5 k + 1 pixels of its
+// texel that find it on their surface (same_surface, as far_field tests).
+float far_support_radius(ivec2 t, Surface o) {
+    ivec2 c = far_sample_texel(t);
+    ivec2 lo = ivec2(u_viewport.xy);
+    ivec2 hi = lo + ivec2(u_viewport.zw) - 1;
+    int n = u_far_scale + u_far_scale / 2 + 1;
+    float r = 0.0;
+    for (int dy = -n; dy <= n; ++dy) {
+        for (int dx = -n; dx <= n; ++dx) {
+            Surface s = read_geometry_texel(clamp(c + ivec2(dx, dy), lo, hi));
+            if (s.depth < 1.0 && same_surface(s, o, distance(u_eye, s.P)))
+                r = max(r, distance(s.P, o.P));
+        }
+    }
+    return r;
+}
+
+// This pixel's bound on |far part interpolated - far part|, in linear
+// light: from the worst of its samples' terms, its own material and the
+// weighted distances to the samples. 0 where it sums its own far part;
+// 1e30 where a light straddles the plane or a term overflowed.
+float far_field_bound(Surface s, float eye_distance) {
+    ivec2 grid = (ivec2(u_viewport.zw) + u_far_scale - 1) / u_far_scale;
+    vec2 q = (gl_FragCoord.xy - u_viewport.xy) / float(u_far_scale) - 0.5;
+    ivec2 t0 = ivec2(floor(q));
+    vec2 f = q - vec2(t0);
+    float weight = 0.0;
+    vec3 centre = vec3(0.0);    // sum of w_k (x_k - x)
+    float spread2 = 0.0;        // sum of w_k |x_k - x|^2
+    vec4 worst = vec4(0.0);
+    vec4 extra = vec4(0.0);
+    for (int k = 0; k < 4; ++k) {
+        ivec2 corner = ivec2(k & 1, k >> 1);
+        ivec2 t = clamp(t0 + corner, ivec2(0), grid - 1);
+        Surface o = read_geometry_texel(far_sample_texel(t));
+        if (!same_surface(s, o, eye_distance)) continue;
+        float w = max((corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y), 1e-3);
+        vec3 dx = o.P - s.P;
+        weight += w;
+        centre += w * dx;
+        spread2 += w * dot(dx, dx);
+        worst = max(worst, texelFetch(u_far_diffuse, far_texel(t), 0));
+        extra = max(extra, texelFetch(u_far_specular, far_texel(t), 0));
+    }
+    if (weight == 0.0) return 0.0;
+    if (extra.y > 0.0 || any(greaterThanEqual(worst, vec4(TERM_LIMIT)))) return 1e30;
+    float off = length(centre) / weight;
+    spread2 /= weight;
+    float kd = max(s.kd.r, max(s.kd.g, s.kd.b));
+    float ks = max(s.ks.r, max(s.ks.g, s.ks.b));
+    return kd * (worst.y * off + 0.5 * worst.x * spread2)
+        + ks * (worst.w * off + 0.5 * worst.z * spread2)
+        + max(kd, ks) * extra.x * exp2(-11.0);
+}
+#endif

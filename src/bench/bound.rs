@@ -1,0 +1,103 @@
+//! The far field's error bound beside its measured error: the frame drawn
+//! once more with `render.far_field_bound`, where tiled shading writes, per
+//! pixel, a bound on |far part interpolated - far part| in linear light
+//! (glsl/common/far_field.glsl derives it; docs/deferred/far_field.md). Here
+//! each pixel's bound goes through the 8-bit sRGB encoding around the
+//! pixel's own value, as the measured error does: the widest of
+//! encode(v + b) - encode(v) and encode(v) - encode(v - b).
+
+use crate::frame::targets::LIGHT_ACCUMULATION;
+use crate::gl::Headless;
+use crate::gl::program::Sources;
+use crate::lighting::{srgb_decode, srgb_encode};
+use crate::renderer::Renderer;
+use crate::scene::{RenderPath, Scene};
+use anyhow::Result;
+
+/// The bound over a frame, in 8-bit sRGB units (0..1): its largest value,
+/// and the percentage of pixels where it exceeds 1/255.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameBound {
+    pub max: f64,
+    pub pct_over_1: f64,
+}
+
+/// The bound of `scene`'s far field, whose 8-bit image is `image`; None
+/// when the scene has no far field.
+pub fn far_field(
+    ctx: &Headless,
+    scene: &Scene,
+    image: &image::RgbaImage,
+) -> Result<Option<FrameBound>> {
+    if scene.render.path != RenderPath::Tiled || scene.render.far_field == 0 {
+        return Ok(None);
+    }
+    let mut s = scene.clone();
+    s.render.far_field_bound = true;
+    let (w, h) = s.render.size;
+    let mut r = Renderer::new(
+        &ctx.gl,
+        &ctx.debug,
+        &s,
+        &Sources::Embedded,
+        w as i32,
+        h as i32,
+    )?;
+    r.render(&s.camera)?;
+    let Some(light) = r.targets().find(LIGHT_ACCUMULATION) else {
+        return Ok(None);
+    };
+    // Bottom row first; the image is top row first.
+    let b = light.read_rgba_f32(0);
+    Ok(Some(encode_bound(&b, image)))
+}
+
+/// Each pixel's linear bound (the red channel of `bound`, bottom row first)
+/// through the sRGB encoding around `image`'s values.
+pub fn encode_bound(bound: &[f32], image: &image::RgbaImage) -> FrameBound {
+    let (w, h) = image.dimensions();
+    let (mut max, mut over) = (0.0f64, 0usize);
+    for y in 0..h {
+        for x in 0..w {
+            let b = bound[(((h - 1 - y) * w + x) * 4) as usize].max(0.0);
+            let px = image.get_pixel(x, y);
+            let mut worst = 0.0f64;
+            for c in 0..3 {
+                let v = f32::from(px[c]) / 255.0;
+                let lin = srgb_decode(v);
+                let up = srgb_encode((lin + b).min(1.0)) - v;
+                let down = v - srgb_encode((lin - b).max(0.0));
+                worst = worst.max(f64::from(up.max(down)));
+            }
+            max = max.max(worst);
+            if worst > 1.0 / 255.0 {
+                over += 1;
+            }
+        }
+    }
+    FrameBound {
+        max,
+        pct_over_1: 100.0 * over as f64 / (w as f64 * h as f64).max(1.0),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_bound_widens_through_the_encoding_where_the_image_is_dark() {
+        // Two pixels, one black and one mid-grey, each with a bound of 1e-3.
+        let image = image::RgbaImage::from_fn(2, 1, |x, _| {
+            let v = if x == 0 { 0 } else { 128 };
+            image::Rgba([v, v, v, 255])
+        });
+        let bound = [1e-3, 0.0, 0.0, 1.0, 1e-3, 0.0, 0.0, 1.0];
+        let b = encode_bound(&bound, &image);
+        // Near black the encoding's slope is 12.92: 1e-3 -> 0.0129.
+        assert!((b.max - 12.92e-3).abs() < 1e-5, "{b:?}");
+        assert_eq!(b.pct_over_1, 50.0);
+        let zero = encode_bound(&[0.0; 8], &image);
+        assert_eq!(zero.max, 0.0);
+    }
+}

@@ -251,3 +251,52 @@ fn bench_scaling_measures_lights_and_pixels() {
         assert_eq!((img.width(), img.height()), gloss::bench::PLOT_SIZE);
     }
 }
+
+#[test]
+fn bench_prints_the_far_fields_bound_and_every_pass_against_the_floor() {
+    let out = std::env::temp_dir().join("gloss-bench-far-field");
+    let _ = std::fs::remove_dir_all(&out);
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "scenes/far-field.toml"])
+        .args(["--vary", "render.far_field=1,4"])
+        .args(["--reference", "render.far_field=1"])
+        .args([
+            "--frames", "1", "--warmup", "0", "--size", "160x90", "--out",
+        ])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains("bound max×255"), "{stdout}");
+    // k = 1 samples every pixel itself: its bound is the stored values'
+    // rounding, under one 8-bit step; k = 4 has a bound of its own.
+    let bound_max = |prefix: &str| -> f64 {
+        let line = stdout.lines().find(|l| l.starts_with(prefix)).unwrap();
+        let cols: Vec<&str> = line.split_whitespace().collect();
+        // bound max, bound %, clock are the last three columns.
+        cols[cols.len() - 3].parse().unwrap()
+    };
+    assert!(bound_max("render.far_field=1 ") < 1.0, "{stdout}");
+    assert!(bound_max("render.far_field=4 ") > 0.0, "{stdout}");
+    assert!(
+        stdout.contains("each pass against the fill-rate floor at 160x90"),
+        "{stdout}"
+    );
+    for pass in ["gbuffer", "far field", "lighting", "composite"] {
+        assert!(
+            stdout.lines().any(|l| l.contains("render.far_field=4")
+                && l.split_whitespace()
+                    .collect::<Vec<_>>()
+                    .join(" ")
+                    .contains(&format!(" {pass} "))),
+            "{pass}: {stdout}"
+        );
+    }
+    let csv = std::fs::read_to_string(out.join("bench.csv")).unwrap();
+    assert!(
+        csv.lines().next().unwrap().contains("bound_max_x255"),
+        "{csv}"
+    );
+}

@@ -85,10 +85,8 @@ vec3 far_field(Surface s, vec3 V, float eye_distance) {
     for (int k = 0; k < 4; ++k) {
         ivec2 corner = ivec2(k & 1, k >> 1);
         ivec2 t = clamp(t0 + corner, ivec2(0), grid - 1);
-        if (!same_surface(s, read_geometry_texel(far_sample_texel(t)), eye_distance)) continue;
-        // Never quite 0: a sample that stands for the surface counts even
-        // where the bilinear weight vanishes.
-        float w = max((corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y), 1e-3);
+        float w = (corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y);
+        if (w <= 0.0 || !same_surface(s, read_geometry_texel(far_sample_texel(t)), eye_distance)) continue;
         diffuse += w * texelFetch(u_far_diffuse, far_texel(t), 0).rgb;
         specular += w * texelFetch(u_far_specular, far_texel(t), 0).rgb;
         weight += w;
@@ -208,9 +206,10 @@ float far_field_bound(Surface s, float eye_distance) {
     for (int k = 0; k < 4; ++k) {
         ivec2 corner = ivec2(k & 1, k >> 1);
         ivec2 t = clamp(t0 + corner, ivec2(0), grid - 1);
+        float w = (corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y);
+        if (w <= 0.0) continue;
         Surface o = read_geometry_texel(far_sample_texel(t));
         if (!same_surface(s, o, eye_distance)) continue;
-        float w = max((corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y), 1e-3);
         vec3 dx = o.P - s.P;
         weight += w;
         centre += w * dx;
@@ -219,9 +218,12 @@ float far_field_bound(Surface s, float eye_distance) {
         extra = max(extra, texelFetch(u_far_specular, far_texel(t), 0));
     }
     if (weight == 0.0) return 0.0;
-    if (extra.y > 0.0 || any(greaterThanEqual(worst, vec4(TERM_LIMIT)))) return 1e30;
     float off = length(centre) / weight;
     spread2 /= weight;
+    // A sample at the pixel itself (k = 1) needs no smoothness.
+    bool smooth_needed = spread2 > 0.0;
+    if (smooth_needed && (extra.y > 0.0 || any(greaterThanEqual(worst, vec4(TERM_LIMIT)))))
+        return 1e30;
     float kd = max(s.kd.r, max(s.kd.g, s.kd.b));
     float ks = max(s.ks.r, max(s.ks.g, s.ks.b));
     return kd * (worst.y * off + 0.5 * worst.x * spread2)

@@ -29,6 +29,17 @@ pub fn far_field(
     scene: &Scene,
     image: &image::RgbaImage,
 ) -> Result<Option<FrameBound>> {
+    Ok(far_field_pixels(ctx, scene, image)?.map(|b| FrameBound::of(&b)))
+}
+
+/// Each pixel's bound in 8-bit sRGB units (0..1), top row first, for
+/// `scene`'s far field whose 8-bit image is `image`; None when the scene
+/// has no far field.
+pub fn far_field_pixels(
+    ctx: &Headless,
+    scene: &Scene,
+    image: &image::RgbaImage,
+) -> Result<Option<Vec<f64>>> {
     if scene.render.path != RenderPath::Tiled || scene.render.far_field == 0 {
         return Ok(None);
     }
@@ -47,16 +58,26 @@ pub fn far_field(
     let Some(light) = r.targets().find(LIGHT_ACCUMULATION) else {
         return Ok(None);
     };
-    // Bottom row first; the image is top row first.
-    let b = light.read_rgba_f32(0);
-    Ok(Some(encode_bound(&b, image)))
+    Ok(Some(encode_bound(&light.read_rgba_f32(0), image)))
 }
 
-/// Each pixel's linear bound (the red channel of `bound`, bottom row first)
-/// through the sRGB encoding around `image`'s values.
-pub fn encode_bound(bound: &[f32], image: &image::RgbaImage) -> FrameBound {
+impl FrameBound {
+    /// The largest of per-pixel bounds and the share above 1/255.
+    pub fn of(pixels: &[f64]) -> FrameBound {
+        let max = pixels.iter().copied().fold(0.0, f64::max);
+        let over = pixels.iter().filter(|&&b| b > 1.0 / 255.0).count();
+        FrameBound {
+            max,
+            pct_over_1: 100.0 * over as f64 / (pixels.len() as f64).max(1.0),
+        }
+    }
+}
+
+/// Each pixel's linear bound (the red channel of `bound`, bottom row
+/// first) through the sRGB encoding around `image`'s values, top row first.
+pub fn encode_bound(bound: &[f32], image: &image::RgbaImage) -> Vec<f64> {
     let (w, h) = image.dimensions();
-    let (mut max, mut over) = (0.0f64, 0usize);
+    let mut out = Vec::with_capacity((w * h) as usize);
     for y in 0..h {
         for x in 0..w {
             let b = bound[(((h - 1 - y) * w + x) * 4) as usize].max(0.0);
@@ -69,16 +90,10 @@ pub fn encode_bound(bound: &[f32], image: &image::RgbaImage) -> FrameBound {
                 let down = v - srgb_encode((lin - b).max(0.0));
                 worst = worst.max(f64::from(up.max(down)));
             }
-            max = max.max(worst);
-            if worst > 1.0 / 255.0 {
-                over += 1;
-            }
+            out.push(worst);
         }
     }
-    FrameBound {
-        max,
-        pct_over_1: 100.0 * over as f64 / (w as f64 * h as f64).max(1.0),
-    }
+    out
 }
 
 #[cfg(test)]
@@ -93,11 +108,11 @@ mod tests {
             image::Rgba([v, v, v, 255])
         });
         let bound = [1e-3, 0.0, 0.0, 1.0, 1e-3, 0.0, 0.0, 1.0];
-        let b = encode_bound(&bound, &image);
+        let b = FrameBound::of(&encode_bound(&bound, &image));
         // Near black the encoding's slope is 12.92: 1e-3 -> 0.0129.
         assert!((b.max - 12.92e-3).abs() < 1e-5, "{b:?}");
         assert_eq!(b.pct_over_1, 50.0);
-        let zero = encode_bound(&[0.0; 8], &image);
+        let zero = FrameBound::of(&encode_bound(&[0.0; 8], &image));
         assert_eq!(zero.max, 0.0);
     }
 }

@@ -23,7 +23,7 @@
 pub mod aa;
 mod args;
 pub mod bloom;
-mod bound;
+pub mod bound;
 mod csv;
 mod floor;
 mod plot;

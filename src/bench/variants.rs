@@ -113,6 +113,11 @@ pub(super) fn run(
         println!("{}", super::bloom::table(&blooms));
     }
     finish(&rows, args)?;
+    let floor_ms = super::post::full_screen_ms(ctx, args, &reference_scene)?;
+    println!(
+        "{}",
+        super::floor::table(&rows, floor_ms, reference_scene.render.size)
+    );
     if !reference_scene.post.is_empty() {
         println!("{}", super::post::floor_table(ctx, args, &reference_scene)?);
     }

@@ -163,3 +163,50 @@ fn the_plan_has_the_far_field_only_when_asked_on_the_tiled_path() {
     }
     assert!(!gloss::techniques::plan(&directional).has_pass("far field"));
 }
+
+/// The bound holds pixel by pixel: the far field at k = 4 and 8 against
+/// the exact far part (k = 1, the same G-buffer and sums in RGBA32F) is
+/// within each pixel's bound, plus 1/255 for the two images' 8-bit
+/// rounding. With k = 1 the bound is the stored values' rounding alone.
+#[test]
+fn every_pixel_is_within_its_bound() {
+    let ctx = common::context(common::backend());
+    for name in ["far-field.toml", "default.toml"] {
+        let mut base = common::scene(name);
+        base.render.size = (320, 180);
+        let exact = common::render_with(&ctx, &far(&base, 1), Output::Srgb8).image;
+        let b1 = gloss::bench::bound::far_field_pixels(&ctx, &far(&base, 1), &exact)
+            .unwrap()
+            .unwrap();
+        let worst1 = b1.iter().copied().fold(0.0, f64::max);
+        assert!(worst1 <= 1.0 / 255.0, "{name}: k = 1 bound {worst1}");
+        for k in [4, 8] {
+            let s = far(&base, k);
+            let image = common::render_with(&ctx, &s, Output::Srgb8).image;
+            let bound = gloss::bench::bound::far_field_pixels(&ctx, &s, &image)
+                .unwrap()
+                .unwrap();
+            let (mut worst_ratio, mut outside) = (0.0f64, Vec::new());
+            for (i, (a, e)) in image.pixels().zip(exact.pixels()).enumerate() {
+                let d = (0..3)
+                    .map(|c| (f64::from(a[c]) - f64::from(e[c])).abs() / 255.0)
+                    .fold(0.0, f64::max);
+                if d > bound[i] + 1.0 / 255.0 {
+                    outside.push((i % 320, i / 320, d * 255.0, bound[i] * 255.0));
+                }
+                if d > 1.0 / 255.0 {
+                    worst_ratio = worst_ratio.max(d / bound[i].max(1e-12));
+                }
+            }
+            assert!(
+                outside.is_empty(),
+                "{name} k = {k}: {} pixels outside their bound (x, y, error, bound x255): {:?}",
+                outside.len(),
+                &outside[..outside.len().min(10)]
+            );
+            eprintln!(
+                "{name} k = {k}: every pixel within its bound; largest error / bound {worst_ratio:.3}"
+            );
+        }
+    }
+}

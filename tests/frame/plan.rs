@@ -201,3 +201,68 @@ fn a_frame_without_lights_allocates_no_light_target() {
         "forward renders straight into the output: {p}"
     );
 }
+
+/// A frame allocates what its passes use: the output has a depth-stencil
+/// buffer only where a pass after the composite (or forward) tests depth,
+/// the G-buffer a stencil only for the stencil volumes and the light
+/// pre-pass (whose combine copies its depth into the output), and the
+/// light accumulation target copies the G-buffer's depth format.
+#[test]
+fn a_frame_allocates_only_the_buffers_its_passes_use() {
+    let base = common::scene("mixed-lights.toml");
+    let attachments = |s: &Scene, target: &str| -> Vec<String> {
+        plan(s).target(target).map_or(vec![], |t| t.attachments())
+    };
+    let depth_of = |s: &Scene, target: &str| -> Option<String> {
+        attachments(s, target)
+            .into_iter()
+            .find(|a| a.starts_with("depth"))
+    };
+    for path in [RenderPath::Deferred, RenderPath::Volumes, RenderPath::Tiled] {
+        let s = with_path(&base, path);
+        assert_eq!(attachments(&s, "output"), ["color:RGBA8"], "{path:?}");
+        assert_eq!(
+            depth_of(&s, "gbuffer").as_deref(),
+            Some("depth:DEPTH_COMPONENT24"),
+            "{path:?}"
+        );
+    }
+    let forward = with_path(&base, RenderPath::Forward);
+    assert_eq!(
+        depth_of(&forward, "output").as_deref(),
+        Some("depth_stencil:DEPTH24_STENCIL8")
+    );
+    let prepass = with_path(&base, RenderPath::Prepass);
+    assert_eq!(
+        depth_of(&prepass, "gbuffer").as_deref(),
+        Some("depth_stencil:DEPTH24_STENCIL8")
+    );
+    let mut stencil = with_path(&base, RenderPath::Volumes);
+    stencil.render.stencil_volumes = true;
+    for target in ["gbuffer", "light_accumulation"] {
+        assert_eq!(
+            depth_of(&stencil, target).as_deref(),
+            Some("depth_stencil:DEPTH24_STENCIL8"),
+            "{target}"
+        );
+    }
+    let volumes = with_path(&base, RenderPath::Volumes);
+    assert_eq!(
+        depth_of(&volumes, "light_accumulation").as_deref(),
+        Some("depth:DEPTH_COMPONENT24")
+    );
+    // A deferred frame with a mirror draws after its composite: the output
+    // keeps its depth-stencil for the mirror's stencil marks.
+    let mut mirrors = common::scene("mirror-normal-first.toml");
+    mirrors.render.path = RenderPath::Deferred;
+    assert_eq!(
+        depth_of(&mirrors, "output").as_deref(),
+        Some("depth_stencil:DEPTH24_STENCIL8")
+    );
+    // The memory `gloss plan` reports shrinks accordingly: 4 bytes a pixel
+    // less in the output of a deferred frame.
+    let text = plan(&with_path(&base, RenderPath::Deferred)).to_string();
+    let (w, h) = base.render.size;
+    let output = size_name(4 * u64::from(w) * u64::from(h));
+    assert!(text.contains(&format!("color:RGBA8  ({output})")), "{text}");
+}

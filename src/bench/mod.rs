@@ -18,7 +18,8 @@
 //! samples), `table` (the rows and the text table), `csv` and `plot` (the
 //! CSV file and the PNG plot of error against frame time), `floor` (every
 //! pass against the fill-rate floor measured in the same run), `bound` (the
-//! far field's analytic error bound beside its measured error).
+//! far field's analytic error bound beside its measured error), `pareto`
+//! (the settings no other beats on both time and error).
 
 pub mod aa;
 mod args;
@@ -26,6 +27,7 @@ pub mod bloom;
 pub mod bound;
 mod csv;
 mod floor;
+pub mod pareto;
 mod plot;
 mod post;
 mod scaling;
@@ -267,6 +269,8 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
 /// Print the table, write the CSV and the plot.
 fn finish(rows: &[BenchRow], args: &BenchArgs) -> Result<()> {
     println!("{}", table(rows));
+    println!("{}", pareto::describe(rows, "max error", |r| r.max_abs));
+    println!("{}", pareto::describe(rows, "RMSE", |r| r.rmse));
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create {}", args.out.display()))?;
     let csv = args.out.join("bench.csv");

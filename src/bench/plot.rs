@@ -116,12 +116,17 @@ fn fmt_ms_axis(v: &f64) -> String {
 /// Writes a PNG plot ([`PLOT_SIZE`]) of image error against speed: x = frame
 /// time median (ms; log scale when the times span more than 4x), y = RMSE
 /// against the reference x255; one coloured line+points series per path,
-/// each point labelled with its light count (or cutoff, for a cutoff sweep).
+/// each point labelled with its light count (or cutoff, for a cutoff sweep);
+/// the Pareto front (src/bench/pareto.rs) as a dashed black line.
 /// Rows with a non-finite or non-positive time, or a non-finite RMSE, are
 /// left out. Creates the parent directory.
 pub fn plot(rows: &[BenchRow], path: &Path) -> anyhow::Result<()> {
     ensure_font()?;
     let series = series(rows);
+    let front: Vec<(f64, f64)> = (super::pareto::front(rows, |r| r.rmse).into_iter())
+        .map(|i| (rows[i].frame.median, rows[i].rmse * 255.0))
+        .filter(|&(x, _)| x > 0.0)
+        .collect();
     let xs = series.iter().flat_map(|s| s.points.iter().map(|p| p.0));
     let (xmin, xmax) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
         (lo.min(x), hi.max(x))
@@ -148,11 +153,11 @@ pub fn plot(rows: &[BenchRow], path: &Path) -> anyhow::Result<()> {
                 .log_scale()
                 .with_key_points(decade_ticks(lo, hi, &[1.0, 2.0, 5.0]))
                 .with_light_points(decade_ticks(lo, hi, &[3.0, 4.0, 6.0, 7.0, 8.0, 9.0]));
-            draw(&root, x, y_range, &series, "log scale")?;
+            draw(&root, x, y_range, &series, &front, "log scale")?;
         } else {
             let pad = ((xmax - xmin) * 0.15).max(xmax * 0.1);
             let x = (xmin - pad).max(0.0)..(xmax + pad);
-            draw(&root, x, y_range, &series, "linear")?;
+            draw(&root, x, y_range, &series, &front, "linear")?;
         }
         root.present().map_err(|e| anyhow!("drawing plot: {e}"))?;
     }
@@ -168,6 +173,7 @@ fn draw<X>(
     x_spec: X,
     y_range: std::ops::Range<f64>,
     series: &[Series],
+    front: &[(f64, f64)],
     x_scale: &str,
 ) -> anyhow::Result<()>
 where
@@ -221,6 +227,20 @@ where
                     )
             }))
             .map_err(|e| err(&e))?;
+    }
+    // Over the series: the Pareto front by RMSE, a dashed black line
+    // through the settings no other beats on both time and error.
+    if front.len() > 1 {
+        chart
+            .draw_series(DashedLineSeries::new(
+                front.iter().copied(),
+                8,
+                5,
+                BLACK.stroke_width(2),
+            ))
+            .map_err(|e| err(&e))?
+            .label("Pareto front")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
     }
     chart
         .configure_series_labels()

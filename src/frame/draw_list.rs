@@ -162,6 +162,26 @@ impl DrawList {
             .collect()
     }
 
+    /// The opaque items the world passes draw (not transparent, not
+    /// mirrors): front to back by the eye-space depth of their centres in
+    /// `view` when `sorted` (notes 01 §6.2: the depth test then rejects
+    /// hidden fragments before they are shaded), else in the scene's order.
+    /// A big object's centre says little about its nearest point: a floor
+    /// under everything sorts by its middle.
+    pub fn opaque_order(&self, view: &Mat4, sorted: bool) -> Vec<usize> {
+        let mut order: Vec<usize> = (0..self.items.len())
+            .filter(|&i| !self.items[i].transparent && !self.items[i].mirror)
+            .collect();
+        if sorted {
+            let depth = |i: usize| {
+                let d = &self.items[i];
+                -view.transform_point3(d.model.transform_point3(d.centre)).z
+            };
+            order.sort_by(|&a, &b| depth(a).total_cmp(&depth(b)));
+        }
+        order
+    }
+
     pub fn mesh(&self, d: &DrawItem) -> &Mesh {
         &self.meshes[d.mesh]
     }

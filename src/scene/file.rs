@@ -98,6 +98,7 @@ pub(super) struct RenderFile {
     pub(super) billboards: BillboardMode,
     pub(super) billboard_alpha_ref: f32,
     pub(super) sort_transparent: bool,
+    pub(super) sort_opaque: bool,
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
     pub(super) msaa: u32,
@@ -126,6 +127,7 @@ impl Default for RenderFile {
             billboards: BillboardMode::AlphaTest,
             billboard_alpha_ref: 0.5,
             sort_transparent: true,
+            sort_opaque: true,
             post_chain: super::settings::ChainForm::PingPong,
             msaa: 1,
         }

@@ -354,6 +354,19 @@ pub static SORT_TRANSPARENT: Knob = Knob {
     },
 };
 
+pub static SORT_OPAQUE: Knob = Knob {
+    key: "render.sort_opaque",
+    label: "sort opaque",
+    help: "draw opaque objects front to back (notes 01 §6.2), so that hidden fragments fail the depth test before they are shaded; off: the scene file's order",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.sort_opaque),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.sort_opaque = b;
+        }
+    },
+};
+
 pub static MSAA: Knob = Knob {
     key: "render.msaa",
     label: "MSAA samples",
@@ -388,6 +401,7 @@ pub static ALL: &[&Knob] = &[
     &BILLBOARDS,
     &BILLBOARD_ALPHA_REF,
     &SORT_TRANSPARENT,
+    &SORT_OPAQUE,
     &POST_CHAIN,
     &MSAA,
 ];

@@ -129,6 +129,9 @@ pub struct RenderSettings {
     /// Draw transparent objects back to front (notes 01 §6.1); false shows
     /// what goes wrong unsorted.
     pub sort_transparent: bool,
+    /// Draw opaque objects nearest first (notes 01 §6.2), so that the depth
+    /// test rejects hidden fragments before they are shaded.
+    pub sort_opaque: bool,
     /// How the post chain passes its image along (src/scene/post.rs).
     pub post_chain: post::ChainForm,
     /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4

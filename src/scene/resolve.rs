@@ -189,6 +189,7 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             a
         },
         sort_transparent: r.sort_transparent,
+        sort_opaque: r.sort_opaque,
         post_chain: r.post_chain,
         msaa: {
             if !MSAA_SAMPLES.contains(&r.msaa) {

@@ -266,3 +266,37 @@ fn a_frame_allocates_only_the_buffers_its_passes_use() {
     let output = size_name(4 * u64::from(w) * u64::from(h));
     assert!(text.contains(&format!("color:RGBA8  ({output})")), "{text}");
 }
+
+/// Notes 01 §6.2: opaque objects drawn front to back, by the eye-space depth
+/// of their centres, so that the depth test rejects hidden fragments before
+/// they are shaded. The order changes the cost, never the image: forward
+/// and deferred frames are the same with and without it.
+#[test]
+fn opaque_objects_are_drawn_front_to_back_and_the_image_does_not_change() {
+    use gloss::frame::draw_list::DrawList;
+    use gloss::renderer::Output;
+    let ctx = common::context(common::backend());
+    let scene = common::scene("many-lights.toml");
+    let draws = DrawList::new(&ctx.gl, &scene).unwrap();
+    let view = scene.camera.view();
+    let depth = |i: usize| {
+        let d = &draws.items[i];
+        -view.transform_point3(d.model.transform_point3(d.centre)).z
+    };
+    let sorted = draws.opaque_order(&view, true);
+    let depths: Vec<f32> = sorted.iter().map(|&i| depth(i)).collect();
+    assert!(depths.windows(2).all(|w| w[0] <= w[1]), "{depths:?}");
+    let unsorted = draws.opaque_order(&view, false);
+    assert!(unsorted.windows(2).all(|w| w[0] < w[1]), "the file's order");
+    assert_eq!(sorted.len(), unsorted.len());
+    assert_ne!(sorted, unsorted, "many-lights lists its floor first");
+    for path in [RenderPath::Forward, RenderPath::Deferred] {
+        let mut s = with_path(&scene, path);
+        s.render.size = (240, 136);
+        s.lights.truncate(16);
+        let on = common::render_with(&ctx, &s, Output::Srgb8).image;
+        s.render.sort_opaque = false;
+        let off = common::render_with(&ctx, &s, Output::Srgb8).image;
+        assert!(on == off, "{path:?}: sorting changed the image");
+    }
+}

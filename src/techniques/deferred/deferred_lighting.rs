@@ -213,7 +213,9 @@ impl DeferredLighting {
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             // Transparent objects are drawn later, sorted (blending/transparency.rs);
             // mirrors by the mirror technique (stencil/mirror.rs).
-            for d in (f.draws.items.iter()).filter(|d| !d.transparent && !d.mirror) {
+            let view = f.uniforms.view * f.view.reflection;
+            for i in f.draws.opaque_order(&view, f.scene.render.sort_opaque) {
+                let d = &f.draws.items[i];
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));

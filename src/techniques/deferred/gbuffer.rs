@@ -122,7 +122,9 @@ impl RunPasses for GBufferPass {
             let mut depth_func = f.scene.render.depth_func;
             // Transparent objects are drawn later, sorted (blending/transparency.rs);
             // mirrors by the mirror technique (stencil/mirror.rs).
-            for d in (f.draws.items.iter()).filter(|d| !d.transparent && !d.mirror) {
+            let view = f.uniforms.view * f.view.reflection;
+            for i in f.draws.opaque_order(&view, f.scene.render.sort_opaque) {
+                let d = &f.draws.items[i];
                 // A material may test depth its own way (notes 05, "Depth Test and Operation").
                 let func = d.depth_func.unwrap_or(f.scene.render.depth_func);
                 if func != depth_func {

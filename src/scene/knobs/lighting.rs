@@ -1,0 +1,110 @@
+//! The knobs of the lighting paths: the light-volume cutoff, the stencil
+//! volumes, the accumulation format, the deferred path's form, and tiled
+//! shading's grid and far field.
+
+use super::{Kind, Knob, Value, index};
+use crate::scene::settings::{Accumulation, DeferredLights};
+
+pub static CUTOFF: Knob = Knob {
+    key: "render.cutoff",
+    label: "light-volume cutoff",
+    help: "a light's volume ends where it falls to this fraction of its brightest channel (notes 04: 5/256)",
+    kind: Kind::Number {
+        min: 1e-5,
+        max: 0.5,
+        log: true,
+    },
+    get: |r| Value::Number(r.cutoff),
+    set: |r, v| {
+        if let Value::Number(x) = v {
+            r.cutoff = x;
+        }
+    },
+};
+
+pub static STENCIL_VOLUMES: Knob = Knob {
+    key: "render.stencil_volumes",
+    label: "stencil volumes",
+    help: "mark each light's lit pixels with the two-sided stencil test first (notes 05)",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.stencil_volumes),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.stencil_volumes = b;
+        }
+    },
+};
+
+pub static ACCUMULATION: Knob = Knob {
+    key: "render.accumulation",
+    label: "light accumulation",
+    help: "the format lights add up in: rgba16f, or rgba32f for hundreds of lights",
+    kind: Kind::Choice(Accumulation::WORDS),
+    get: |r| Value::Choice(index(Accumulation::ALL, r.accumulation)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.accumulation = Accumulation::ALL[i];
+        }
+    },
+};
+
+pub static DEFERRED_LIGHTS: Knob = Knob {
+    key: "render.deferred_lights",
+    label: "deferred lights",
+    help: "the deferred path: a full-screen pass per light (notes 04), or one pass looping over all (notes 01 §8.6.2)",
+    kind: Kind::Choice(DeferredLights::WORDS),
+    get: |r| Value::Choice(index(DeferredLights::ALL, r.deferred_lights)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.deferred_lights = DeferredLights::ALL[i];
+        }
+    },
+};
+
+pub static TILE_SIZE: Knob = Knob {
+    key: "render.tile_size",
+    label: "tile size",
+    help: "tiled shading: the screen tile's edge in pixels (lights are binned per tile on the CPU)",
+    kind: Kind::Count {
+        min: *crate::scene::resolve::TILE_SIZES.start(),
+        max: *crate::scene::resolve::TILE_SIZES.end(),
+    },
+    get: |r| Value::Count(r.tile_size),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.tile_size = n;
+        }
+    },
+};
+
+pub static FAR_FIELD: Knob = Knob {
+    key: "render.far_field",
+    label: "far field",
+    help: "tiled shading: 0 stops each light at its cutoff radius; k adds the light beyond half that radius from a far field sampled once per k x k pixels",
+    kind: Kind::Count {
+        min: 0,
+        max: *crate::scene::resolve::FAR_FIELD_SCALES.end(),
+    },
+    get: |r| Value::Count(r.far_field),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.far_field = n;
+        }
+    },
+};
+
+pub static DEPTH_SLICES: Knob = Knob {
+    key: "render.depth_slices",
+    label: "depth slices",
+    help: "tiled shading: depth slices between near and far, spaced exponentially (1: tiles only; more: clustered)",
+    kind: Kind::Count {
+        min: *crate::scene::resolve::DEPTH_SLICES.start(),
+        max: *crate::scene::resolve::DEPTH_SLICES.end(),
+    },
+    get: |r| Value::Count(r.depth_slices),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.depth_slices = n;
+        }
+    },
+};

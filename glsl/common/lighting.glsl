@@ -5,7 +5,7 @@
 //   c_d = max(N . L, 0) * k_d
 //   c_s = max(N . H, 0)^n * k_s,  H = normalize(L + V)   (the notes' 1/2 (V + L)
 //                                 is not unit length; normalise instead)
-//   att = 1 / (Kc + Kl d + Kq d^2)
+//   att = 1 / (Kc + Kl d + Kq d^2)      (times a window with render.falloff = "windowed")
 //
 // A point or spot light is a sphere of radius LIGHT_RADIUS, not a point
 // (src/math/sphere_light.rs says why and cites it): att is taken at
@@ -18,6 +18,11 @@
 #define LIGHT_DIRECTIONAL 0
 #define LIGHT_POINT 1
 #define LIGHT_SPOT 2
+// Added to the type when the light's falloff is windowed (render.falloff,
+// src/frame/lights.rs WINDOWED): the notes' attenuation times
+// (1 - (d / r)^4)^2, clamped, which is 0 from the radius r on (Karis 2013,
+// "Real Shading in Unreal Engine 4"). A different model from the notes'.
+#define LIGHT_WINDOWED 4
 
 // std140, 64 bytes a light (src/lighting.rs writes this layout).
 struct Light {
@@ -55,7 +60,8 @@ float sphere_cosine(float cos_theta, float sin_sigma, out float visible) {
 // L, the sine of the light's angular radius in sin_sigma (0: directional),
 // and the scalar att * spot factor.
 float light_factor(Light light, vec3 P, out vec3 L, out float sin_sigma) {
-    int type = int(light.position_type.w);
+    int code = int(light.position_type.w);
+    int type = code & 3;
     sin_sigma = 0.0;
     if (type == LIGHT_DIRECTIONAL) {
         L = -light.direction_radius.xyz;
@@ -68,6 +74,12 @@ float light_factor(Light light, vec3 P, out vec3 L, out float sin_sigma) {
     sin_sigma = LIGHT_RADIUS / r;
     vec3 k = light.atten_cos_inner.xyz;
     float att = 1.0 / (k.x + k.y * r + k.z * r * r);
+    if ((code & LIGHT_WINDOWED) != 0) {
+        float radius = light.direction_radius.w;
+        float x = radius > 0.0 ? d / radius : 1.0;
+        float w = clamp(1.0 - x * x * x * x, 0.0, 1.0);
+        att *= w * w;
+    }
     if (type == LIGHT_SPOT) {
         float c = dot(-L, light.direction_radius.xyz);
         float cos_outer = light.color_cos_outer.w;

@@ -9,11 +9,15 @@
 //! read the same radius from the uniform block.
 
 use crate::lighting::attenuation;
-use crate::scene::{Light, LightKind, RenderPath, Scene};
+use crate::scene::{Falloff, Light, LightKind, RenderPath, Scene};
 use glam::{Mat4, Quat, Vec3, Vec4};
 
 /// Bytes per light in the std140 `Lights` block (four vec4).
 pub const LIGHT_STRIDE: usize = 64;
+
+/// Added to a light's type code when its attenuation is windowed
+/// (`render.falloff = "windowed"`; LIGHT_WINDOWED in glsl/common/lighting.glsl).
+pub const WINDOWED: f32 = 4.0;
 
 /// The most lights gloss's `Lights` block holds on any GL.
 pub const MAX_LIGHTS: usize = 1024;
@@ -165,15 +169,22 @@ impl FrameLights {
 
     /// Pack the lights as glsl/common/lighting.glsl's `struct Light` (std140):
     /// position + type, direction + radius (-1: none), colour x intensity +
-    /// cos(outer), (Kc, Kl, Kq) + cos(inner).
+    /// cos(outer), (Kc, Kl, Kq) + cos(inner). The type is 0 directional, 1
+    /// point, 2 spot, plus `WINDOWED` when the scene's falloff is windowed
+    /// and the light has a radius: the flag travels with the light to every
+    /// path, through the uniform block and tiled shading's buffer texture
+    /// alike.
     pub fn pack(&self, scene: &Scene) -> Vec<u8> {
         let mut out = Vec::with_capacity(scene.lights.len() * LIGHT_STRIDE);
         for (l, f) in scene.lights.iter().zip(&self.lights) {
-            let ty = match l.kind {
+            let mut ty = match l.kind {
                 LightKind::Directional => 0.0,
                 LightKind::Point => 1.0,
                 LightKind::Spot => 2.0,
             };
+            if scene.render.falloff == Falloff::Windowed && f.radius.is_some() {
+                ty += WINDOWED;
+            }
             let c = l.radiance();
             let v = [
                 Vec4::new(l.position.x, l.position.y, l.position.z, ty),

@@ -2,7 +2,7 @@
 //! as glsl/common/lighting.glsl, written once more so that tests can compare
 //! rendered pixels with `shade` below. Also the sRGB transfer functions the
 //! output uses, and (in `attenuation`) notes 04's attenuation and light-volume
-//! radius. `tonemap`: the post chain's tone-mapping and gamma curves.
+//! radius, and (in `window`) the windowed falloff. `tonemap`: the post chain's tone-mapping and gamma curves.
 //! `shadow_reference` is the exact answer shadow mapping approximates
 //! (notes 01 §8.5): rays to the light through a BVH (`bvh`, `triangle`).
 
@@ -11,6 +11,7 @@ pub mod bvh;
 pub mod shadow_reference;
 pub mod tonemap;
 pub mod triangle;
+pub mod window;
 
 use crate::math::sphere_light;
 use crate::scene::{Light, LightKind, Material};
@@ -27,6 +28,12 @@ pub fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 /// `light_factor`. A point or spot light is a sphere of radius
 /// `sphere_light::LIGHT_RADIUS`: attenuated at no less than that distance.
 pub fn light_factor(l: &Light, p: Vec3) -> (f32, Vec3, f32) {
+    light_factor_windowed(l, p, None)
+}
+
+/// `light_factor`, with the windowed falloff (`window`) at `radius` when it
+/// is Some: glsl `light_factor` for a light whose type has LIGHT_WINDOWED.
+pub fn light_factor_windowed(l: &Light, p: Vec3, radius: Option<f32>) -> (f32, Vec3, f32) {
     match l.kind {
         LightKind::Directional => (1.0, -l.direction, 0.0),
         _ => {
@@ -35,6 +42,9 @@ pub fn light_factor(l: &Light, p: Vec3) -> (f32, Vec3, f32) {
             let dir = to / d.max(1e-20);
             let r = d.max(sphere_light::LIGHT_RADIUS);
             let mut att = 1.0 / (l.kc + l.kl * r + l.kq * r * r);
+            if let Some(radius) = radius {
+                att *= window::window(d, radius);
+            }
             if l.kind == LightKind::Spot {
                 let c = (-dir).dot(l.direction);
                 att *= smoothstep(
@@ -50,7 +60,19 @@ pub fn light_factor(l: &Light, p: Vec3) -> (f32, Vec3, f32) {
 
 /// Diffuse and specular light from one light (before the material), as glsl `phong_light`.
 pub fn phong_light(l: &Light, p: Vec3, n: Vec3, v: Vec3, shininess: f32) -> (Vec3, Vec3) {
-    let (f, dir, sin_sigma) = light_factor(l, p);
+    phong_light_windowed(l, p, n, v, shininess, None)
+}
+
+/// `phong_light` with the windowed falloff at `radius` when it is Some.
+pub fn phong_light_windowed(
+    l: &Light,
+    p: Vec3,
+    n: Vec3,
+    v: Vec3,
+    shininess: f32,
+    radius: Option<f32>,
+) -> (Vec3, Vec3) {
+    let (f, dir, sin_sigma) = light_factor_windowed(l, p, radius);
     let i = l.radiance() * f;
     let horizon = sphere_light::sphere_cosine(n.dot(dir), sin_sigma);
     let n_dot_l = horizon.cosine;

@@ -5,8 +5,8 @@
 use super::billboards::{BillboardFieldFile, BillboardFile};
 use super::mirrors::MirrorFile;
 use super::settings::{
-    Accumulation, AlphaTest, BillboardMode, DeferredLights, DepthFunc, MirrorOrder, RenderPath,
-    Shading,
+    Accumulation, AlphaTest, BillboardMode, DeferredLights, DepthFunc, Falloff, MirrorOrder,
+    RenderPath, Shading,
 };
 use serde::Deserialize;
 use std::collections::HashMap;
@@ -84,6 +84,7 @@ pub(super) struct RenderFile {
     pub(super) cutoff: f32,
     pub(super) stencil_volumes: bool,
     pub(super) accumulation: Accumulation,
+    pub(super) falloff: Falloff,
     pub(super) deferred_lights: DeferredLights,
     pub(super) tile_size: u32,
     pub(super) depth_slices: u32,
@@ -116,6 +117,7 @@ impl Default for RenderFile {
             cutoff: 5.0 / 256.0,
             stencil_volumes: false,
             accumulation: Accumulation::Rgba16f,
+            falloff: Falloff::Notes,
             deferred_lights: DeferredLights::PerLight,
             tile_size: 16,
             depth_slices: 16,

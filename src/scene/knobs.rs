@@ -11,7 +11,8 @@ use glam::Vec3;
 
 mod lighting;
 pub use lighting::{
-    ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FAR_FIELD, STENCIL_VOLUMES, TILE_SIZE,
+    ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, STENCIL_VOLUMES,
+    TILE_SIZE,
 };
 
 /// What a knob holds.
@@ -284,6 +285,7 @@ pub static ALL: &[&Knob] = &[
     &SHADING,
     &DEPTH_FUNC,
     &CUTOFF,
+    &FALLOFF,
     &STENCIL_VOLUMES,
     &ACCUMULATION,
     &DEFERRED_LIGHTS,

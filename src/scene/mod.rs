@@ -38,8 +38,8 @@ pub use file::LightGrid;
 pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
 pub use settings::{
-    Accumulation, AlphaTest, BillboardKind, BillboardMode, DeferredLights, DepthFunc, MirrorOrder,
-    RenderPath, Shading,
+    Accumulation, AlphaTest, BillboardKind, BillboardMode, DeferredLights, DepthFunc, Falloff,
+    MirrorOrder, RenderPath, Shading,
 };
 pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;
@@ -102,6 +102,9 @@ pub struct RenderSettings {
     pub stencil_volumes: bool,
     /// Internal format of the light accumulation target (RGBA16F or RGBA32F).
     pub accumulation: Accumulation,
+    /// How point and spot lights' attenuation ends: the notes' model, or a
+    /// windowed one that reaches 0 at the cutoff radius.
+    pub falloff: Falloff,
     /// The deferred path: a pass per light, or one pass over all of them.
     pub deferred_lights: DeferredLights,
     /// Tiled shading: the screen tile's edge in pixels, and how many depth

@@ -133,6 +133,7 @@ fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         stencil_volumes: r.stencil_volumes,
         accumulation: r.accumulation,
+        falloff: r.falloff,
         deferred_lights: r.deferred_lights,
         tile_size: {
             if !(TILE_SIZES).contains(&r.tile_size) {

@@ -172,6 +172,19 @@ setting! {
 }
 
 setting! {
+    /// How a point or spot light's attenuation ends.
+    pub enum Falloff {
+        /// Notes 04's 1 / (Kc + Kl d + Kq d^2), which never reaches 0: the
+        /// light-volume paths cut it at the radius and drop the tail.
+        Notes = "notes",
+        /// A different model: the notes' attenuation times a window that
+        /// reaches 0 exactly at the radius, (1 - (d / r)^4)^2 clamped
+        /// (Karis 2013). The cutoff then drops nothing.
+        Windowed = "windowed",
+    }
+}
+
+setting! {
     /// How the full-screen deferred path loops over the lights.
     pub enum DeferredLights {
         /// One full-screen pass per light, added by blending (notes 04,

@@ -17,6 +17,8 @@
 //!   and slice count (both summed in RGBA32F: within 1/255); with a tiny
 //!   cutoff, == forward within the deferred bound; 10,000 lights == the sum
 //!   of their parts.
+//! * with the windowed falloff, light volumes and tiled shading == forward
+//!   within the deferred bound (the cutoff drops nothing).
 //! * tiled shading with the far field: one sample per pixel == forward within
 //!   the deferred bound; one per 4x4 or 8x8 pixels within FAR_BOUND.
 //!
@@ -33,6 +35,7 @@ mod numeric_edges;
 mod numeric_sweep;
 mod stencil_light_volumes;
 mod tiled_shading;
+mod windowed_falloff;
 
 use gloss::image_compare::Tolerance;
 use gloss::scene::{RenderPath, Scene};

@@ -6,9 +6,10 @@
 use crate::common;
 
 use glam::Vec3;
-use gloss::lighting::{shade, srgb_encode};
+use gloss::frame::lights::radius;
+use gloss::lighting::{phong_light_windowed, srgb_encode};
 use gloss::renderer::Output;
-use gloss::scene::{Camera, Projection, Scene, Shading};
+use gloss::scene::{Camera, Falloff, Projection, Scene, Shading};
 
 /// The world point under the centre of pixel (px, py) (top row first) for
 /// the top-down orthographic camera of scenes/plane.toml (up = -z).
@@ -31,19 +32,23 @@ fn world_at(cam: &Camera, w: u32, h: u32, px: u32, py: u32) -> Vec3 {
 fn check_plane(scene: &Scene, label: &str) -> f32 {
     let r = common::render(scene, Output::Srgb8);
     let m = &scene.materials[scene.objects[0].material];
+    // The windowed falloff ends each light at its radius at the cutoff.
+    let radii: Vec<Option<f32>> = (scene.lights.iter())
+        .map(|l| match scene.render.falloff {
+            Falloff::Windowed => radius(l, scene.render.cutoff),
+            Falloff::Notes => None,
+        })
+        .collect();
     let mut worst = 0.0f32;
     for py in (0..r.height).step_by(7) {
         for px in (0..r.width).step_by(7) {
             let p = world_at(&scene.camera, r.width, r.height, px, py);
-            let c = shade(
-                &scene.lights,
-                scene.render.ambient,
-                m,
-                m.diffuse,
-                p,
-                Vec3::Y,
-                scene.camera.eye,
-            );
+            let v = (scene.camera.eye - p).normalize();
+            let mut c = scene.render.ambient * m.diffuse;
+            for (l, &radius) in scene.lights.iter().zip(&radii) {
+                let (d, s) = phong_light_windowed(l, p, Vec3::Y, v, m.shininess, radius);
+                c += m.diffuse * d + m.specular * s;
+            }
             let got = r.image.get_pixel(px, py);
             for ch in 0..3 {
                 let want = srgb_encode(c[ch]) * 255.0;
@@ -182,4 +187,24 @@ fn singular_model_matrix_flattened_sphere_is_lit_like_the_plane() {
     let n = (nm * Vec3::new(0.3, 0.8, 0.1)).normalize();
     assert!((n - Vec3::Y).length() < 1e-6, "flattened normal {n}");
     check_plane(&scene, "flattened sphere");
+}
+
+#[test]
+fn a_lit_plane_under_the_windowed_falloff_equals_the_cpu_formula() {
+    // A cutoff of 0.2 puts the radius inside the picture: the light ends
+    // in a visible circle, which the notes' model does not have.
+    let mut scene = common::scene("plane.toml");
+    scene.render.cutoff = 0.2;
+    scene.render.falloff = Falloff::Windowed;
+    let worst = check_plane(&scene, "windowed");
+    eprintln!("windowed plane: worst difference {worst:.3}/255");
+    let windowed = common::render(&scene, Output::Srgb8);
+    scene.render.falloff = Falloff::Notes;
+    let notes = common::render(&scene, Output::Srgb8);
+    let m =
+        gloss::image_compare::compare_rgba8(&windowed.image, &notes.image, 1.0 / 255.0).unwrap();
+    assert!(
+        m.max_abs > 10.0 / 255.0,
+        "the window changes the image: {m}"
+    );
 }

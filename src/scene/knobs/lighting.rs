@@ -3,7 +3,7 @@
 //! shading's grid and far field.
 
 use super::{Kind, Knob, Value, index};
-use crate::scene::settings::{Accumulation, DeferredLights};
+use crate::scene::settings::{Accumulation, DeferredLights, Falloff};
 
 pub static CUTOFF: Knob = Knob {
     key: "render.cutoff",
@@ -44,6 +44,19 @@ pub static ACCUMULATION: Knob = Knob {
     set: |r, v| {
         if let Value::Choice(i) = v {
             r.accumulation = Accumulation::ALL[i];
+        }
+    },
+};
+
+pub static FALLOFF: Knob = Knob {
+    key: "render.falloff",
+    label: "falloff",
+    help: "notes: 1 / (Kc + Kl d + Kq d^2), cut at the radius by the volume paths; windowed: a different model that reaches 0 at the radius, so no path cuts anything",
+    kind: Kind::Choice(Falloff::WORDS),
+    get: |r| Value::Choice(index(Falloff::ALL, r.falloff)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.falloff = Falloff::ALL[i];
         }
     },
 };

@@ -18,7 +18,7 @@ use super::attenuation::attenuation;
 
 /// W(d / r); a light with radius 0 (never brighter than the cutoff) gets 0.
 pub fn window(d: f32, radius: f32) -> f32 {
-    if !(radius > 0.0) {
+    if radius.is_nan() || radius <= 0.0 {
         return 0.0;
     }
     let x = d / radius;

@@ -34,8 +34,10 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 
 pub mod depth;
 pub mod gaussian;
+pub mod keyframes;
 #[cfg(test)]
 pub(crate) mod lcg;
+pub mod slerp;
 pub mod sphere_light;
 
 /// Builds a matrix from its four rows, written as they appear on paper.

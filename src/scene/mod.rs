@@ -24,6 +24,7 @@ mod mirrors;
 mod overrides;
 pub mod post;
 mod post_entry;
+mod render_settings;
 mod resolve;
 mod save;
 mod settings;

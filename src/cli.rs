@@ -24,6 +24,15 @@ pub struct Cli {
     /// render.path=volumes, render.ambient=[0.1,0.1,0.1]. Repeatable.
     #[arg(long = "set", global = true, value_name = "KEY=VALUE")]
     pub set: Vec<String>,
+    /// The instant of the scene's animation to show, in seconds (the same as
+    /// --set animation.time=SECONDS).
+    #[arg(
+        long,
+        global = true,
+        value_name = "SECONDS",
+        allow_negative_numbers = true
+    )]
+    pub time: Option<f32>,
     /// Demo: start with the panel hidden (Tab shows it).
     #[arg(long)]
     pub no_panel: bool,

@@ -97,7 +97,11 @@ fn load_scene(
     Ok(scene)
 }
 
-fn run(cli: Cli) -> Result<()> {
+fn run(mut cli: Cli) -> Result<()> {
+    if let Some(t) = cli.time {
+        // The scene checks it as it checks the file's own time.
+        cli.set.push(format!("animation.time={t}"));
+    }
     match cli.command {
         None => {
             let scene_path = cli

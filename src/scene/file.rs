@@ -35,6 +35,9 @@ pub(super) struct SceneFile {
     /// The post chain's entries, each checked by src/scene/post.rs.
     #[serde(default)]
     pub(super) post: Vec<toml::Table>,
+    /// Keyframe tracks and the instant shown (src/scene/animation.rs).
+    #[serde(default)]
+    pub(super) animation: super::animation::AnimationFile,
 }
 
 #[derive(Deserialize, Debug)]

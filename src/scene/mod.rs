@@ -11,6 +11,7 @@
 //! triangles behind each mesh source (`meshes`).
 
 mod alpha_test;
+pub mod animation;
 mod billboards;
 pub mod bloom;
 pub mod camera_limits;
@@ -179,6 +180,9 @@ pub struct Object {
     pub model: Mat4,
     /// Set when the object is a planar mirror.
     pub mirror: Option<Mirror>,
+    /// A rotation that replaces `rotation`'s angles: an animation track's
+    /// (src/scene/animation.rs). None: the file's angles.
+    pub orientation: Option<glam::Quat>,
 }
 
 impl Object {
@@ -187,6 +191,12 @@ impl Object {
     pub fn local(&self) -> Mat4 {
         let r = self.rotation * (std::f32::consts::PI / 180.0);
         let (p, s) = (self.position, self.scale);
+        if let Some(q) = self.orientation {
+            // An animated rotation: T * R(q) * S.
+            return math::translate(p.x, p.y, p.z)
+                * Mat4::from_quat(q)
+                * math::scale(s.x, s.y, s.z);
+        }
         math::translate(p.x, p.y, p.z)
             * math::rotate_z(r.z)
             * math::rotate_y(r.y)
@@ -239,6 +249,8 @@ pub struct Scene {
     /// `[[post]]`: the post-processing chain, in order (empty: none; the
     /// lit scene is the output).
     pub post: Vec<post::PostPass>,
+    /// `[animation]`: keyframe tracks and the instant shown.
+    pub animation: animation::Animation,
     /// Every key the file and `--set` wrote, dotted (`render.cutoff`,
     /// `lights[0].shadow.cube`): `warnings` names those with no effect.
     pub keys_written: std::collections::BTreeSet<String>,

@@ -69,7 +69,8 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
     let (sprites, billboards) = super::billboards::billboards(&f, base)?;
     let post = super::post::chain(&f.post)?;
 
-    Ok(Scene {
+    let animation = super::animation::resolve(&f.animation, &objects)?;
+    let mut scene = Scene {
         name,
         path: path.to_path_buf(),
         grid_lights: f.light_grid.as_ref().map(|g| g.count),
@@ -85,8 +86,12 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         billboard_list: f.billboards.clone(),
         billboard_fields: f.billboard_fields.clone(),
         post,
+        animation,
         keys_written: Default::default(),
-    })
+    };
+    // The instant the file asks for.
+    scene.set_time(scene.animation.time)?;
+    Ok(scene)
 }
 
 /// Materials (sorted by name so indices are stable); also returns the index
@@ -253,6 +258,7 @@ fn objects(
             parent,
             model: glam::Mat4::IDENTITY,
             mirror: locals[i].3.clone(),
+            orientation: None,
         });
     }
     super::update_models(&mut objects);

@@ -434,3 +434,82 @@ fn scene_far_field_scale_out_of_range() {
         &["render.far_field", "expected 0 (off)", "1..=32", "found 33"],
     );
 }
+
+#[test]
+fn animation_tracks_that_cannot_be_played_are_refused() {
+    let track =
+        |body: &str| format!("{BASE}\n[animation]\ntime = 0.5\n\n[[animation.tracks]]\n{body}\n");
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "anim_unknown_object",
+            "object = \"nothing\"\ntimes = [0.0]\nposition = [[0, 0, 0]]",
+            &["animation.tracks[0].object", "no object named \"nothing\""],
+        ),
+        (
+            "anim_count",
+            "object = \"floor\"\ntimes = [0.0, 1.0]\nposition = [[0, 0, 0]]",
+            &["animation.tracks[0].position", "2 times but 1 values"],
+        ),
+        (
+            "anim_interpolation",
+            "object = \"floor\"\ninterpolation = \"bezier\"\ntimes = [0.0]\nscale = [[1, 1, 1]]",
+            &[
+                "animation.tracks[0].interpolation",
+                "\"step\", \"linear\" or \"cubic\"",
+                "\"bezier\"",
+            ],
+        ),
+        (
+            "anim_no_channel",
+            "object = \"floor\"\ntimes = [0.0]",
+            &["animation.tracks[0]", "give position, rotation or scale"],
+        ),
+        (
+            "anim_zero_rotation",
+            "object = \"floor\"\ntimes = [0.0]\nrotation = [[0, 0, 0, 0]]",
+            &["animation.tracks[0].rotation", "zero"],
+        ),
+    ];
+    for (name, body, words) in cases {
+        scene_fails(name, &track(body), words);
+    }
+    let twice = format!(
+        "{}\n[[animation.tracks]]\nobject = \"floor\"\ntimes = [0.0]\nscale = [[2, 2, 2]]\n",
+        track("object = \"floor\"\ntimes = [0.0]\nscale = [[1, 1, 1]]")
+    );
+    scene_fails(
+        "anim_twice",
+        &twice,
+        &[
+            "animation.tracks[1].object",
+            "already moved by animation.tracks[0]",
+        ],
+    );
+    let weight = format!(
+        "{}\n[animation.weights]\nwalk = 1.0\n",
+        track("object = \"floor\"\ntimes = [0.0]\nscale = [[1, 1, 1]]")
+    );
+    scene_fails(
+        "anim_weight_no_clip",
+        &weight,
+        &[
+            "animation.weights.walk",
+            "no track belongs to a clip named \"walk\"",
+        ],
+    );
+    let negative = format!(
+        "{}\n[animation.weights]\nmain = -1.0\n",
+        track("object = \"floor\"\ntimes = [0.0]\nscale = [[1, 1, 1]]")
+    );
+    scene_fails(
+        "anim_weight_negative",
+        &negative,
+        &["animation.weights.main", "expected a weight >= 0"],
+    );
+    let inf = BASE.to_string() + "\n[animation]\ntime = inf\n";
+    scene_fails(
+        "anim_time_inf",
+        &inf,
+        &["animation.time", "finite number of seconds"],
+    );
+}

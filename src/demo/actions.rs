@@ -151,6 +151,10 @@ impl Demo {
                 self.scene.camera = c;
                 Ok(())
             }
+            Action::Time(t) => {
+                let mut scene = self.scene.clone();
+                scene.set_time(t).and_then(|()| self.set_values(scene))
+            }
             Action::ResetCamera => {
                 self.orbit = super::Orbit::new(&self.scene.camera);
                 Ok(())
@@ -218,7 +222,7 @@ impl Demo {
     }
 
     /// Give the renderer `scene`'s edited values and keep them.
-    fn set_values(&mut self, scene: Scene) -> Result<()> {
+    pub(super) fn set_values(&mut self, scene: Scene) -> Result<()> {
         if let Some(run) = self.running.as_mut() {
             run.renderer.set_scene_values(&scene)?;
         }

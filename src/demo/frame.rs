@@ -39,6 +39,20 @@ impl Demo {
                 seconds,
             );
         }
+        // The animation plays on from where it is, by the time since the
+        // last swap (src/demo/panel/animation.rs).
+        if let Some(span) = self.scene.animation.span()
+            && run.panel.playing
+        {
+            let dt = run.last_swap.elapsed().as_secs_f32() * run.panel.speed;
+            let t = super::panel::advance(self.scene.animation.time, dt, span);
+            let mut scene = self.scene.clone();
+            scene.set_time(t)?;
+            self.set_values(scene)?;
+        }
+        let Some(run) = self.running.as_mut() else {
+            return Ok(false);
+        };
         let camera = self.orbit.camera();
         // Pass times are measured (glFinish after each pass) while the panel shows them.
         run.renderer.timing = run.panel.open && run.panel.pass_times;

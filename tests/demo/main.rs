@@ -5,6 +5,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod animation;
 mod compare;
 mod driver;
 mod panel;

@@ -8,6 +8,7 @@
 //! lists, and the inspector's views from the plan's targets, so a technique
 //! appears here through its one registration.
 
+mod animation;
 mod knob;
 mod post_chain;
 mod post_params;
@@ -16,6 +17,7 @@ mod structure;
 mod timings;
 mod values;
 
+pub use animation::advance;
 pub use shadow_knobs::too_many_casters;
 pub use timings::Timings;
 
@@ -64,6 +66,8 @@ pub enum Action {
     ResetCamera,
     /// Compare the frame with the forward reference.
     Compare,
+    /// Show this instant of the scene's animation (seconds).
+    Time(f32),
 }
 
 /// What the panel shows.
@@ -102,6 +106,10 @@ pub struct PanelState {
     pub pass_times: bool,
     /// Draw the inspector's thumbnail strip.
     pub thumbnails: bool,
+    /// Play the scene's animation (advance its time every frame).
+    pub playing: bool,
+    /// How fast it plays (1: real time).
+    pub speed: f32,
     path_text: String,
     save_text: String,
 }
@@ -117,6 +125,8 @@ impl PanelState {
             timings: Timings::default(),
             pass_times: true,
             thumbnails: true,
+            playing: true,
+            speed: 1.0,
             path_text: scene_path.to_string(),
             save_text: "edited.toml".into(),
         }
@@ -145,6 +155,7 @@ impl PanelState {
                         ui.label(s);
                     }
                     self.scene_section(ui, input, &mut actions);
+                    self.animation_section(ui, input, &mut actions);
                     technique_section(ui, input, &mut actions);
                     post_chain::section(ui, input, &mut actions);
                     self.inspector_section(ui, input, &mut actions);

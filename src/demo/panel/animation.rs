@@ -1,0 +1,61 @@
+//! The panel's animation section (notes 01 §7; src/scene/animation.rs),
+//! shown when the scene has keyframe tracks: play or pause, scrub the time
+//! over the keys' span, and the playing speed. Scrubbing asks for
+//! `Action::Time`; while playing, the demo advances the time each frame
+//! (`advance`).
+
+use super::{Action, PanelInput, PanelState};
+
+/// The time `dt` seconds after `t`, looping over the span `(first, last)`.
+pub fn advance(t: f32, dt: f32, (first, last): (f32, f32)) -> f32 {
+    let length = last - first;
+    if length.is_nan() || length <= 0.0 || !(t + dt).is_finite() {
+        return first;
+    }
+    first + (t + dt - first).rem_euclid(length)
+}
+
+impl PanelState {
+    pub(super) fn animation_section(
+        &mut self,
+        ui: &mut egui::Ui,
+        input: &PanelInput,
+        actions: &mut Vec<Action>,
+    ) {
+        let Some((first, last)) = input.scene.animation.span() else {
+            return;
+        };
+        let clips = input.scene.animation.tracks.len();
+        egui::CollapsingHeader::new(format!("Animation ({clips} tracks)"))
+            .default_open(true)
+            .show(ui, |ui| {
+                ui.checkbox(&mut self.playing, "play");
+                let mut t = input.scene.animation.time;
+                let slider = egui::Slider::new(&mut t, first..=last)
+                    .text("time (s)")
+                    .fixed_decimals(2);
+                if ui.add(slider).changed() {
+                    self.playing = false;
+                    actions.push(Action::Time(t));
+                }
+                ui.add(egui::Slider::new(&mut self.speed, 0.0..=4.0).text("speed"));
+            });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_time_loops_over_the_span() {
+        assert_eq!(advance(0.5, 0.25, (0.0, 2.0)), 0.75);
+        assert!((advance(1.9, 0.3, (0.0, 2.0)) - 0.2).abs() < 1e-6);
+        assert!((advance(3.0, 0.0, (1.0, 2.0)) - 1.0).abs() < 1e-6);
+        // Before the span: brought into it.
+        assert!((advance(-0.5, 0.0, (0.0, 2.0)) - 1.5).abs() < 1e-6);
+        // One key, or a time that is not a number: the first key.
+        assert_eq!(advance(0.3, 0.1, (1.0, 1.0)), 1.0);
+        assert_eq!(advance(f32::NAN, 0.1, (0.0, 2.0)), 0.0);
+    }
+}

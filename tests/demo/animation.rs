@@ -1,0 +1,42 @@
+//! src/demo/panel/animation.rs, driven headless through the panel's
+//! widgets: a scene with keyframe tracks gets an animation section; its
+//! time slider asks for that instant, and the frame then is the scene at
+//! that instant; "play" starts and stops the clock. A scene without tracks
+//! has no such section.
+
+use crate::common;
+use crate::driver::{Driver, input};
+use gloss::demo::panel::Action;
+use gloss::gl::program::Sources;
+use gloss::renderer::{Output, Renderer};
+
+#[test]
+fn the_time_slider_scrubs_and_play_pauses() {
+    let ctx = common::context(common::backend());
+    let mut scene = common::scene("animation.toml");
+    scene.render.size = (160, 90);
+    let mut r = Renderer::new(&ctx.gl, &ctx.debug, &scene, &Sources::Embedded, 160, 90).unwrap();
+    let mut d = Driver::new();
+    assert!(d.panel.playing, "an animated scene plays from the start");
+    assert!(d.find(&input(&scene, &r), "Animation (3 tracks)").is_some());
+    // Scrubbing asks for the instant, and stops the playing.
+    let actions = d.set_value(&input(&scene, &r), "time (s)", 1.5);
+    assert_eq!(actions, [Action::Time(1.5)]);
+    assert!(!d.panel.playing);
+    // The demo's answer to it (src/demo/actions.rs): the scene at 1.5 s.
+    scene.set_time(1.5).unwrap();
+    r.set_scene_values(&scene).unwrap();
+    r.render(&scene.camera).unwrap();
+    let scrubbed = r.read_image();
+    let mut fresh = common::scene("animation.toml");
+    fresh.render.size = (160, 90);
+    fresh.set_time(1.5).unwrap();
+    assert!(scrubbed == common::render_with(&ctx, &fresh, Output::Srgb8).image);
+    // "play" starts the clock again.
+    d.click(&input(&scene, &r), "play");
+    assert!(d.panel.playing);
+    // A scene with no tracks shows no animation section.
+    let still = common::scene("default.toml");
+    let rs = Renderer::new(&ctx.gl, &ctx.debug, &still, &Sources::Embedded, 64, 36).unwrap();
+    assert!(d.find(&input(&still, &rs), "play").is_none());
+}

@@ -13,6 +13,7 @@ pub mod live;
 pub mod mesh;
 pub mod mip_target;
 pub mod osmesa;
+pub mod patches;
 pub mod program;
 pub mod query;
 pub mod texture;

@@ -38,6 +38,8 @@ pub(super) struct SceneFile {
     /// Keyframe tracks and the instant shown (src/scene/animation.rs).
     #[serde(default)]
     pub(super) animation: super::animation::AnimationFile,
+    /// A tessellated terrain (src/scene/tessellation.rs).
+    pub(super) tessellation: Option<super::tessellation::TessellationFile>,
 }
 
 #[derive(Deserialize, Debug)]

@@ -30,6 +30,7 @@ mod resolve;
 mod save;
 mod settings;
 pub mod shadows;
+pub mod tessellation;
 mod text;
 mod views;
 mod warnings;
@@ -251,6 +252,8 @@ pub struct Scene {
     pub post: Vec<post::PostPass>,
     /// `[animation]`: keyframe tracks and the instant shown.
     pub animation: animation::Animation,
+    /// `[tessellation]`: a terrain the GL 4.0 tessellator divides.
+    pub tessellation: Option<tessellation::Tessellation>,
     /// Every key the file and `--set` wrote, dotted (`render.cutoff`,
     /// `lights[0].shadow.cube`): `warnings` names those with no effect.
     pub keys_written: std::collections::BTreeSet<String>,

@@ -87,6 +87,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         billboard_fields: f.billboard_fields.clone(),
         post,
         animation,
+        tessellation: super::tessellation::resolve(f.tessellation.as_ref(), base)?,
         keys_written: Default::default(),
     };
     // The instant the file asks for.

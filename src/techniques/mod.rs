@@ -17,6 +17,7 @@ pub mod lighting;
 pub mod post;
 pub mod shadows;
 pub mod stencil;
+pub mod vertex_geometry;
 
 use crate::frame::Technique;
 use crate::frame::lights::FrameLights;
@@ -27,6 +28,7 @@ use crate::scene::Scene;
 pub static ALL: &[&Technique] = &[
     &shadows::shadow_map::SHADOW_MAP,
     &lighting::forward::FORWARD,
+    &vertex_geometry::tessellation::TESSELLATION,
     &deferred::gbuffer::GBUFFER,
     &deferred::deferred_shading::DEFERRED_SHADING,
     &deferred::light_volumes::LIGHT_VOLUMES,

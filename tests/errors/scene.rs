@@ -513,3 +513,48 @@ fn animation_tracks_that_cannot_be_played_are_refused() {
         &["animation.time", "finite number of seconds"],
     );
 }
+
+#[test]
+fn tessellation_tables_that_cannot_be_drawn_are_refused() {
+    let with = |body: &str| format!("{BASE}\n[tessellation]\n{body}\n");
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "tess_levels",
+            "displacement = \"grey.png\"\nlevels = [8.0, 2.0]",
+            &["tessellation.levels", "1 <= far <= near <= 64"],
+        ),
+        (
+            "tess_patches",
+            "displacement = \"grey.png\"\npatches = 0",
+            &["tessellation.patches", "1..=256"],
+        ),
+        (
+            "tess_edges",
+            "displacement = \"grey.png\"\nedges = \"sometimes\"",
+            &[
+                "tessellation.edges",
+                "\"shared\" or \"per_patch\"",
+                "\"sometimes\"",
+            ],
+        ),
+        (
+            "tess_missing_map",
+            "displacement = \"no-such-map.png\"",
+            &["tessellation.displacement", "no-such-map.png"],
+        ),
+        (
+            "tess_distances",
+            "displacement = \"grey.png\"\ndistances = [5.0, 5.0]",
+            &["tessellation.distances", "near < far"],
+        ),
+    ];
+    for (name, body, words) in cases {
+        let dir = crate::temp_dir(name);
+        image::GrayImage::new(4, 4)
+            .save(dir.join("grey.png"))
+            .unwrap();
+        let path = crate::write(&dir, "scene.toml", with(body));
+        let msg = format!("{:#}", Scene::load(&path).unwrap_err());
+        contains_all(&msg, words);
+    }
+}

@@ -8,4 +8,5 @@ mod common;
 mod animation;
 mod passes;
 mod plan;
+mod tessellation;
 mod timing;

@@ -300,3 +300,35 @@ fn bench_prints_the_far_fields_bound_and_every_pass_against_the_floor() {
         "{csv}"
     );
 }
+
+#[test]
+fn bench_measures_the_particles_both_ways() {
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([
+            "bench",
+            "--particles",
+            "200",
+            "--frames",
+            "1",
+            "--warmup",
+            "0",
+        ])
+        .args(["--size", "96x54"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rows: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.trim_start().starts_with("200 ") && l.contains(" gl"))
+        .collect();
+    assert_eq!(rows.len(), 4, "{stdout}");
+    // Points: 16 bytes a particle; CPU quads: 144.
+    assert!(rows[0].contains("3200"), "{stdout}");
+    assert!(rows[2].contains("28800"), "{stdout}");
+    assert!(
+        stdout.contains("200 particles: the geometry shader sends 89% fewer bytes"),
+        "{stdout}"
+    );
+}

@@ -59,6 +59,12 @@ pub struct BenchArgs {
     /// the number of pixels, instead (src/bench/scaling.rs).
     #[arg(long, conflicts_with_all = ["vary", "aa"])]
     pub scaling: bool,
+    /// Measure the particle system instead, at these particle counts:
+    /// points made quads by the geometry shader against quads built on the
+    /// CPU, each streamed by a mapped buffer and by glBufferSubData
+    /// (src/bench/particles.rs); default scene scenes/particles.toml.
+    #[arg(long, value_delimiter = ',', conflicts_with_all = ["vary", "aa", "scaling"])]
+    pub particles: Vec<usize>,
     /// Where the CSV and the plot go.
     #[arg(long, default_value = "target/bench")]
     pub out: PathBuf,

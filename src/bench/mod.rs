@@ -19,7 +19,8 @@
 //! CSV file and the PNG plot of error against frame time), `floor` (every
 //! pass against the fill-rate floor measured in the same run), `bound` (the
 //! far field's analytic error bound beside its measured error), `pareto`
-//! (the settings no other beats on both time and error).
+//! (the settings no other beats on both time and error), `particles` (the
+//! geometry shader's points against quads built on the CPU).
 
 pub mod aa;
 mod args;
@@ -28,6 +29,7 @@ pub mod bound;
 mod csv;
 mod floor;
 pub mod pareto;
+mod particles;
 mod plot;
 mod post;
 mod scaling;
@@ -87,6 +89,8 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     }
     let default = if args.aa {
         "scenes/antialiasing.toml"
+    } else if !args.particles.is_empty() {
+        "scenes/particles.toml"
     } else {
         "scenes/many-lights.toml"
     };
@@ -102,6 +106,9 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     }
     if args.scaling {
         return scaling::run(args, &base, &ctx, software);
+    }
+    if !args.particles.is_empty() {
+        return particles::run(args, &base, &ctx);
     }
     if !args.vary.is_empty() {
         return variants::run(args, &scene_path, &ctx, software);

@@ -27,6 +27,7 @@ pub mod gbuffer;
 pub mod lights;
 pub mod meshes;
 pub mod multisample;
+pub mod particles;
 pub mod plan;
 pub mod post;
 pub mod shadows;

@@ -16,6 +16,7 @@ pub mod osmesa;
 pub mod patches;
 pub mod program;
 pub mod query;
+pub mod stream;
 pub mod texture;
 pub mod texture_buffer;
 pub mod window;

@@ -40,6 +40,8 @@ pub(super) struct SceneFile {
     pub(super) animation: super::animation::AnimationFile,
     /// A tessellated terrain (src/scene/tessellation.rs).
     pub(super) tessellation: Option<super::tessellation::TessellationFile>,
+    /// A particle fountain (src/scene/particles.rs).
+    pub(super) particles: Option<super::particles::ParticlesFile>,
 }
 
 #[derive(Deserialize, Debug)]

@@ -23,6 +23,7 @@ mod lights;
 pub mod meshes;
 mod mirrors;
 mod overrides;
+pub mod particles;
 pub mod post;
 mod post_entry;
 mod render_settings;
@@ -254,6 +255,9 @@ pub struct Scene {
     pub animation: animation::Animation,
     /// `[tessellation]`: a terrain the GL 4.0 tessellator divides.
     pub tessellation: Option<tessellation::Tessellation>,
+    /// `[particles]`: a particle fountain, drawn as points a geometry shader
+    /// turns into quads.
+    pub particles: Option<particles::Particles>,
     /// Every key the file and `--set` wrote, dotted (`render.cutoff`,
     /// `lights[0].shadow.cube`): `warnings` names those with no effect.
     pub keys_written: std::collections::BTreeSet<String>,

@@ -88,6 +88,7 @@ pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
         post,
         animation,
         tessellation: super::tessellation::resolve(f.tessellation.as_ref(), base)?,
+        particles: super::particles::resolve(f.particles.as_ref())?,
         keys_written: Default::default(),
     };
     // The instant the file asks for.

@@ -40,6 +40,7 @@ pub static ALL: &[&Technique] = &[
     &stencil::mirror::MIRROR,
     &fragment_tests::viewports::VIEWPORTS,
     &billboards::billboards::BILLBOARDS,
+    &vertex_geometry::particles::PARTICLES,
     &blending::transparency::TRANSPARENCY,
     // After every view: first the MSAA resolve (registered before the chain,
     // item 0: the plan's sort by entry is stable), then the post chain, in

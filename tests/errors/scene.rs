@@ -558,3 +558,43 @@ fn tessellation_tables_that_cannot_be_drawn_are_refused() {
         contains_all(&msg, words);
     }
 }
+
+#[test]
+fn particle_tables_that_cannot_be_simulated_are_refused() {
+    let with = |body: &str| format!("{BASE}\n[particles]\n{body}\n");
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "particles_count",
+            "count = 0",
+            &["particles.count", "found 0"],
+        ),
+        (
+            "particles_rate",
+            "rate = -1.0",
+            &["particles.rate", "expected a number > 0"],
+        ),
+        (
+            "particles_spread",
+            "spread = 200.0",
+            &["particles.spread", "0..=180"],
+        ),
+        (
+            "particles_direction",
+            "direction = [0, 0, 0]",
+            &["particles.direction", "expected a direction"],
+        ),
+        (
+            "particles_expand",
+            "expand = \"gpu\"",
+            &[
+                "particles.expand",
+                "\"geometry_shader\" or \"cpu\"",
+                "\"gpu\"",
+            ],
+        ),
+        ("particles_unknown", "colour = [1, 1, 1]", &["colour"]),
+    ];
+    for (name, body, words) in cases {
+        scene_fails(name, &with(body), words);
+    }
+}

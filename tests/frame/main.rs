@@ -6,6 +6,7 @@
 mod common;
 
 mod animation;
+mod particles;
 mod passes;
 mod plan;
 mod tessellation;

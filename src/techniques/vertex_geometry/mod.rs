@@ -1,5 +1,7 @@
 //! Notes 01 §3, "Vertex/Geometry Operation": amplification by the
-//! tessellation shaders (§3.1). gloss's geometry shader is flat shading's
-//! (lighting/forward.rs).
+//! tessellation shaders (§3.1) and generation by the geometry shader
+//! (§3.2: particles; flat shading's geometry shader is in
+//! lighting/forward.rs).
 
+pub mod particles;
 pub mod tessellation;

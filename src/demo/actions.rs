@@ -151,6 +151,16 @@ impl Demo {
                 self.scene.camera = c;
                 Ok(())
             }
+            Action::Particles(p) => {
+                let mut scene = self.scene.clone();
+                scene.particles = Some(p);
+                self.set_values(scene)
+            }
+            Action::Tessellation(t) => {
+                let mut scene = self.scene.clone();
+                scene.tessellation = Some(t);
+                self.set_values(scene)
+            }
             Action::Time(t) => {
                 let mut scene = self.scene.clone();
                 scene.set_time(t).and_then(|()| self.set_values(scene))

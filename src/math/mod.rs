@@ -37,6 +37,7 @@ pub mod gaussian;
 pub mod keyframes;
 #[cfg(test)]
 pub(crate) mod lcg;
+pub mod skinning;
 pub mod slerp;
 pub mod sphere_light;
 

@@ -2,7 +2,8 @@
 //! widgets: a scene with keyframe tracks gets an animation section; its
 //! time slider asks for that instant, and the frame then is the scene at
 //! that instant; "play" starts and stops the clock. A scene without tracks
-//! has no such section.
+//! has no such section. The geometry section edits the particle fountain
+//! and the tessellated terrain.
 
 use crate::common;
 use crate::driver::{Driver, input};
@@ -13,7 +14,7 @@ use gloss::renderer::{Output, Renderer};
 #[test]
 fn the_time_slider_scrubs_and_play_pauses() {
     let ctx = common::context(common::backend());
-    let mut scene = common::scene("animation.toml");
+    let mut scene = common::scene("animated-hierarchy.toml");
     scene.render.size = (160, 90);
     let mut r = Renderer::new(&ctx.gl, &ctx.debug, &scene, &Sources::Embedded, 160, 90).unwrap();
     let mut d = Driver::new();
@@ -28,7 +29,7 @@ fn the_time_slider_scrubs_and_play_pauses() {
     r.set_scene_values(&scene).unwrap();
     r.render(&scene.camera).unwrap();
     let scrubbed = r.read_image();
-    let mut fresh = common::scene("animation.toml");
+    let mut fresh = common::scene("animated-hierarchy.toml");
     fresh.render.size = (160, 90);
     fresh.set_time(1.5).unwrap();
     assert!(scrubbed == common::render_with(&ctx, &fresh, Output::Srgb8).image);
@@ -39,4 +40,43 @@ fn the_time_slider_scrubs_and_play_pauses() {
     let still = common::scene("default.toml");
     let rs = Renderer::new(&ctx.gl, &ctx.debug, &still, &Sources::Embedded, 64, 36).unwrap();
     assert!(d.find(&input(&still, &rs), "play").is_none());
+}
+
+#[test]
+fn the_geometry_section_edits_the_particles_and_the_terrain() {
+    let ctx = common::context(common::backend());
+    let particles = common::scene("particles.toml");
+    let r = Renderer::new(&ctx.gl, &ctx.debug, &particles, &Sources::Embedded, 64, 36).unwrap();
+    let mut d = Driver::new();
+    let actions = d.set_value(&input(&particles, &r), "particles alive", 500.0);
+    let [Action::Particles(p)] = actions.as_slice() else {
+        panic!("{actions:?}")
+    };
+    assert_eq!(p.count, 500);
+    assert!(
+        (p.rate * p.lifetime - 500.0).abs() < 1e-2,
+        "as many born a lifetime as live"
+    );
+    let actions = d.click(&input(&particles, &r), "quads from the geometry shader");
+    let [Action::Particles(p)] = actions.as_slice() else {
+        panic!("{actions:?}")
+    };
+    assert!(!p.geometry_shader);
+    // The terrain: its wireframe and its levels.
+    let terrain = common::scene("tessellated-terrain.toml");
+    let rt = Renderer::new(&ctx.gl, &ctx.debug, &terrain, &Sources::Embedded, 64, 36).unwrap();
+    let actions = d.click(&input(&terrain, &rt), "wireframe");
+    let [Action::Tessellation(t)] = actions.as_slice() else {
+        panic!("{actions:?}")
+    };
+    assert!(t.wireframe);
+    let actions = d.set_value(&input(&terrain, &rt), "level near", 8.0);
+    let [Action::Tessellation(t)] = actions.as_slice() else {
+        panic!("{actions:?}")
+    };
+    assert_eq!(t.levels, [1.0, 8.0]);
+    // A scene with neither has no such section.
+    let still = common::scene("default.toml");
+    let rs = Renderer::new(&ctx.gl, &ctx.debug, &still, &Sources::Embedded, 64, 36).unwrap();
+    assert!(d.find(&input(&still, &rs), "wireframe").is_none());
 }

@@ -14,7 +14,7 @@ fn close(a: Mat4, b: Mat4) -> bool {
 
 #[test]
 fn each_instant_poses_the_objects_as_the_keys_say() {
-    let mut s = common::scene("animation.toml");
+    let mut s = common::scene("animated-hierarchy.toml");
     let index = |s: &gloss::scene::Scene, name: &str| {
         s.objects.iter().position(|o| o.name == name).unwrap()
     };
@@ -58,19 +58,25 @@ fn each_instant_poses_the_objects_as_the_keys_say() {
 
 #[test]
 fn the_time_from_the_command_line_is_the_time_set_on_the_scene() {
-    let path = common::root().join("scenes/animation.toml");
+    let path = common::root().join("scenes/animated-hierarchy.toml");
     let from_set = gloss::scene::Scene::load_with(&path, &["animation.time=1.5".into()]).unwrap();
-    let mut from_api = common::scene("animation.toml");
+    let mut from_api = common::scene("animated-hierarchy.toml");
     from_api.set_time(1.5).unwrap();
     let a = common::render(&from_set, Output::Srgb8).image;
     let b = common::render(&from_api, Output::Srgb8).image;
     assert!(a == b, "--set animation.time=1.5 and set_time(1.5) differ");
-    let file = common::render(&common::scene("animation.toml"), Output::Srgb8).image;
+    let file = common::render(&common::scene("animated-hierarchy.toml"), Output::Srgb8).image;
     assert!(a != file, "1.5 s looks like the file's 0.75 s");
     // `gloss render --time 1.5` writes the same image.
     let out = std::env::temp_dir().join("gloss-animation-time.png");
     let o = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
-        .args(["render", "scenes/animation.toml", "--time", "1.5", "-o"])
+        .args([
+            "render",
+            "scenes/animated-hierarchy.toml",
+            "--time",
+            "1.5",
+            "-o",
+        ])
         .arg(&out)
         .current_dir(common::root())
         .output()
@@ -85,7 +91,7 @@ fn the_time_from_the_command_line_is_the_time_set_on_the_scene() {
 
 #[test]
 fn clips_blend_by_weight_and_the_file_pose_takes_what_is_left() {
-    let path = common::root().join("scenes/animation.toml");
+    let path = common::root().join("scenes/animated-hierarchy.toml");
     let at = |weights: &[&str]| {
         let mut o: Vec<String> = weights
             .iter()

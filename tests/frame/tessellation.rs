@@ -12,14 +12,14 @@ use gloss::renderer::Output;
 use gloss::scene::RenderPath;
 use std::process::Command;
 
-/// `gloss render scenes/tessellation.toml` with `set`, as the GL gives it
+/// `gloss render scenes/tessellated-terrain.toml` with `set`, as the GL gives it
 /// (`capped`: under MESA_GL_VERSION_OVERRIDE=3.3); the image and stderr.
 fn render(name: &str, set: &[&str], capped: bool) -> (image::RgbaImage, String) {
     let out = std::env::temp_dir().join(format!("gloss-tess-{name}.png"));
     let mut c = Command::new(env!("CARGO_BIN_EXE_gloss"));
     c.args([
         "render",
-        "scenes/tessellation.toml",
+        "scenes/tessellated-terrain.toml",
         "--debug",
         "--backend",
         "egl",
@@ -97,7 +97,7 @@ fn on_a_3_3_context_the_terrain_is_reported_and_the_rest_renders() {
         "the rest of the scene is drawn: {sphere} pixels"
     );
     // In this process, under the suite's 3.3 cap, the same holds.
-    let scene = common::scene("tessellation.toml");
+    let scene = common::scene("tessellated-terrain.toml");
     let r = common::render(&scene, Output::Srgb8);
     assert!(
         r.image
@@ -108,7 +108,7 @@ fn on_a_3_3_context_the_terrain_is_reported_and_the_rest_renders() {
 
 #[test]
 fn the_plan_lists_the_pass_on_the_forward_path_and_says_it_needs_4_0() {
-    let scene = common::scene("tessellation.toml");
+    let scene = common::scene("tessellated-terrain.toml");
     let plan = gloss::techniques::plan(&scene).to_string();
     assert!(
         plan.contains("256 patches (16 x 16) of 4 corners"),

@@ -9,6 +9,8 @@
 //! appears here through its one registration.
 
 mod animation;
+mod geometry;
+mod help;
 mod knob;
 mod post_chain;
 mod post_params;
@@ -22,11 +24,11 @@ pub use shadow_knobs::too_many_casters;
 pub use timings::Timings;
 
 use super::inspector::View;
-use super::keys::KEYS;
 use crate::frame::plan::FramePlan;
 use crate::frame::timing::PassTimes;
 use crate::scene::{Camera, Light, Material, RenderSettings, Scene, knobs};
 use crate::techniques;
+use help::{help_window, keys_grid};
 use std::path::PathBuf;
 
 /// What the panel asks the demo to do.
@@ -68,6 +70,10 @@ pub enum Action {
     Compare,
     /// Show this instant of the scene's animation (seconds).
     Time(f32),
+    /// The particle fountain, edited.
+    Particles(crate::scene::particles::Particles),
+    /// The tessellated terrain, edited.
+    Tessellation(crate::scene::tessellation::Tessellation),
 }
 
 /// What the panel shows.
@@ -156,6 +162,7 @@ impl PanelState {
                     }
                     self.scene_section(ui, input, &mut actions);
                     self.animation_section(ui, input, &mut actions);
+                    self.geometry_section(ui, input, &mut actions);
                     technique_section(ui, input, &mut actions);
                     post_chain::section(ui, input, &mut actions);
                     self.inspector_section(ui, input, &mut actions);
@@ -375,21 +382,4 @@ fn technique_section(ui: &mut egui::Ui, input: &PanelInput, actions: &mut Vec<Ac
                 actions.push(Action::Settings(settings));
             }
         });
-}
-
-fn keys_grid(ui: &mut egui::Ui) {
-    egui::Grid::new("keys").striped(true).show(ui, |ui| {
-        for (key, what) in KEYS {
-            ui.monospace(*key);
-            ui.label(*what);
-            ui.end_row();
-        }
-    });
-}
-
-fn help_window(ui: &mut egui::Ui, open: &mut bool) {
-    egui::Window::new("gloss — keys (F1)")
-        .open(open)
-        .collapsible(false)
-        .show(ui.ctx(), keys_grid);
 }

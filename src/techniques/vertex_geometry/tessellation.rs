@@ -52,7 +52,7 @@ pub const TESSELLATION: Technique = Technique {
         "vertex_geometry/tessellation.tese",
         "vertex_geometry/tessellation.frag",
     ],
-    scene: "scenes/tessellation.toml",
+    scene: "scenes/tessellated-terrain.toml",
     docs: "docs/vertex_geometry/tessellation.md",
     knobs: &[],
     passes,

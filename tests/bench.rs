@@ -104,9 +104,9 @@ fn bench_varies_any_scene_key_against_a_reference() {
         .lines()
         .filter(|l| l.starts_with("render.mirror_depth="))
         .map(|l| {
-            // RMSE is the fourth column from the end (RMSE, max, %, clock).
+            // RMSE is the fifth column from the end (RMSE, max, %, frags/px, clock).
             let cols: Vec<&str> = l.split_whitespace().collect();
-            cols[cols.len() - 4].parse().unwrap()
+            cols[cols.len() - 5].parse().unwrap()
         })
         .collect();
     assert_eq!(rmse.len(), 3, "{stdout}");
@@ -331,4 +331,43 @@ fn bench_measures_the_particles_both_ways() {
         stdout.contains("200 particles: the geometry shader sends 89% fewer bytes"),
         "{stdout}"
     );
+}
+
+#[test]
+fn front_to_back_shades_fewer_fragments_a_pixel() {
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([
+            "bench",
+            "scenes/many-lights.toml",
+            "--set",
+            "light_grid.count=4",
+        ])
+        .args(["--vary", "render.sort_opaque=false,true"])
+        .args([
+            "--reference",
+            "render.path=forward",
+            "--set",
+            "render.path=forward",
+        ])
+        .args(["--frames", "1", "--warmup", "0", "--size", "160x90"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let frags = |prefix: &str| -> f64 {
+        let line = stdout.lines().find(|l| l.starts_with(prefix)).unwrap();
+        let cols: Vec<&str> = line.split_whitespace().collect();
+        // frags/px, then the clock.
+        cols[cols.len() - 2].parse().unwrap()
+    };
+    let (unsorted, sorted) = (
+        frags("render.sort_opaque=false"),
+        frags("render.sort_opaque=true"),
+    );
+    assert!(
+        sorted < unsorted,
+        "front to back {sorted} against the file's order {unsorted}\n{stdout}"
+    );
+    assert!(sorted > 0.1, "{stdout}");
 }

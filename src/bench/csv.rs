@@ -61,6 +61,7 @@ pub fn csv(rows: &[BenchRow]) -> String {
         "rmse_x255",
         "max_abs_x255",
         "pct_over_1",
+        "fragments_per_pixel",
         "bound_max_x255",
         "bound_pct_over_1",
         "shadow_misclassified_pct",
@@ -110,6 +111,7 @@ pub fn csv(rows: &[BenchRow]) -> String {
         c.push(csv_num(r.rmse * 255.0));
         c.push(csv_num(r.max_abs * 255.0));
         c.push(csv_num(r.pct_over_1));
+        c.push(r.fragments_per_pixel.map_or_else(String::new, csv_num));
         let b = r.bound.as_ref();
         c.push(b.map_or_else(String::new, |b| csv_num(b.max * 255.0)));
         c.push(b.map_or_else(String::new, |b| csv_num(b.pct_over_1)));

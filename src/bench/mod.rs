@@ -14,13 +14,11 @@
 //! (`aa`); `--scaling`, how the paths' times grow with lights and pixels
 //! (`scaling`).
 //!
-//! The files: `args` (the command line), `stats` (median and spread of the
-//! samples), `table` (the rows and the text table), `csv` and `plot` (the
-//! CSV file and the PNG plot of error against frame time), `floor` (every
-//! pass against the fill-rate floor measured in the same run), `bound` (the
-//! far field's analytic error bound beside its measured error), `pareto`
-//! (the settings no other beats on both time and error), `particles` (the
-//! geometry shader's points against quads built on the CPU).
+//! The files: `args`, `stats` (median and spread), `table`, `csv`, `plot`
+//! (error against frame time), `floor` (each pass against the fill-rate
+//! floor), `bound` (the far field's error bound), `pareto` (settings no
+//! other beats), `overdraw` (fragments a pixel), `particles` (the geometry
+//! shader's points against quads built on the CPU).
 
 pub mod aa;
 mod args;
@@ -28,6 +26,7 @@ pub mod bloom;
 pub mod bound;
 mod csv;
 mod floor;
+mod overdraw;
 pub mod pareto;
 mod particles;
 mod plot;
@@ -344,6 +343,7 @@ fn measure(
         add_pass_times(&mut passes, &r.last_times.passes);
     }
     let image = r.read_image();
+    let fragments = overdraw::fragments_per_pixel(ctx, &mut r, &camera)?;
     let m = match reference {
         Some(reference) => compare_rgba8(&image, reference, 1.0 / 255.0)?,
         None => crate::image_compare::Metrics::incomparable(1.0 / 255.0),
@@ -366,6 +366,7 @@ fn measure(
         max_abs: m.max_abs,
         pct_over_1: m.frac_over * 100.0,
         bound,
+        fragments_per_pixel: Some(fragments),
         ..row
     })
 }

@@ -34,6 +34,9 @@ pub struct BenchRow {
     /// The far field's analytic error bound (src/bench/bound.rs), where the
     /// setting has one.
     pub bound: Option<super::bound::FrameBound>,
+    /// Samples that passed the depth test in one frame, over its pixels
+    /// (GL_SAMPLES_PASSED): the overdraw.
+    pub fragments_per_pixel: Option<f64>,
     /// For a scene whose lights cast: its shadows against the exact ones
     /// (src/bench/shadows.rs).
     pub shadow: Option<crate::image_compare::shadow_metrics::ShadowErrors>,
@@ -134,6 +137,10 @@ pub fn table(rows: &[BenchRow]) -> String {
     for h in ["speed-up", "RMSE×255", "max×255", "% >1/255"] {
         header.push((h.into(), true));
     }
+    let any_fragments = rows.iter().any(|r| r.fragments_per_pixel.is_some());
+    if any_fragments {
+        header.push(("frags/px".into(), true));
+    }
     let any_bound = rows.iter().any(|r| r.bound.is_some());
     if any_bound {
         for h in ["bound max×255", "bound %>1/255"] {
@@ -180,6 +187,12 @@ pub fn table(rows: &[BenchRow]) -> String {
             cells.push(num(r.rmse * 255.0, 3));
             cells.push(num(r.max_abs * 255.0, 1));
             cells.push(num(r.pct_over_1, 3));
+            if any_fragments {
+                cells.push(
+                    r.fragments_per_pixel
+                        .map_or_else(|| DASH.into(), |f| num(f, 2)),
+                );
+            }
             if any_bound {
                 let b = r.bound.as_ref();
                 cells.push(b.map_or_else(|| DASH.into(), |b| num(b.max * 255.0, 1)));
@@ -269,6 +282,7 @@ pub(super) mod tests {
             max_abs: rmse * 4.0,
             pct_over_1: rmse * 1000.0,
             bound: None,
+            fragments_per_pixel: None,
             shadow: None,
         };
         let mut v = vec![

@@ -77,3 +77,44 @@ impl Drop for Timestamp {
         }
     }
 }
+
+/// One GL_SAMPLES_PASSED occlusion query: how many samples passed the
+/// depth test between `begin` and `end`. Over a frame, divided by its
+/// pixels, the fragments shaded a pixel: the overdraw that drawing front
+/// to back (notes 01 §6.2) cuts.
+pub struct SamplesQuery {
+    gl: Gl,
+    pub id: glow::Query,
+}
+
+impl SamplesQuery {
+    pub fn new(gl: &Gl) -> Result<SamplesQuery> {
+        let id = unsafe { gl.create_query() }.map_err(|e| anyhow!("glGenQueries: {e}"))?;
+        super::live::made(super::live::Kind::Query);
+        Ok(SamplesQuery { gl: gl.clone(), id })
+    }
+
+    /// glBeginQuery(GL_SAMPLES_PASSED, id)
+    pub fn begin(&self) {
+        unsafe { self.gl.begin_query(glow::SAMPLES_PASSED, self.id) }
+    }
+
+    /// glEndQuery(GL_SAMPLES_PASSED)
+    pub fn end(&self) {
+        unsafe { self.gl.end_query(glow::SAMPLES_PASSED) }
+    }
+
+    /// Wait for the result: the samples that passed.
+    pub fn result(&self) -> u64 {
+        unsafe { self.gl.get_query_parameter_u64(self.id, glow::QUERY_RESULT) }
+    }
+}
+
+impl Drop for SamplesQuery {
+    fn drop(&mut self) {
+        unsafe {
+            self.gl.delete_query(self.id);
+            super::live::freed(super::live::Kind::Query);
+        }
+    }
+}

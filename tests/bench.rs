@@ -79,6 +79,17 @@ fn bench_rejects_bad_arguments() {
         .unwrap();
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("expected a fraction in (0, 1)"));
+    // --paths with --vary would be ignored: it is refused instead.
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "--paths", "forward", "--vary", "render.cutoff=0.1"])
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("'--paths <PATHS>' cannot be used with '--vary"),
+        "{err}"
+    );
 }
 
 #[test]

@@ -15,11 +15,14 @@ pub struct BenchArgs {
     pub set: Vec<String>,
     /// Render paths, comma-separated (deferred runs both its forms: a pass
     /// per light, and one pass over all the lights).
+    /// With --vary the paths are a key like any other
+    /// (--vary render.path=forward,tiled): --paths is refused there.
     #[arg(
         long,
         value_delimiter = ',',
         value_enum,
-        default_value = "forward,deferred,volumes,prepass,tiled"
+        default_value = "forward,deferred,volumes,prepass,tiled",
+        conflicts_with = "vary"
     )]
     pub paths: Vec<RenderPath>,
     /// Light counts (scenes with a [light_grid]); default: the scene's own.

@@ -69,7 +69,11 @@ impl Scene {
         );
         warn(
             "cutoff",
-            matches!(path, RenderPath::Forward | RenderPath::Deferred) && r.cutoff != 5.0 / 256.0,
+            // The windowed falloff ends every light at its cutoff radius, on
+            // every path.
+            matches!(path, RenderPath::Forward | RenderPath::Deferred)
+                && r.falloff != super::Falloff::Windowed
+                && r.cutoff != 5.0 / 256.0,
             r.cutoff.to_string(),
             &format!(
                 "{on_path}: only light volumes (the volumes, prepass and tiled paths) end where a light falls to it"

@@ -167,3 +167,20 @@ fn a_near_plane_that_z_fights_is_warned_about() {
     let want = "camera.near/far: one depth step at the far plane is 2.384e-1 units (1.19% of the distance): surfaces closer than that z-fight (notes 01 §4.4). Raise near to 1.192e-3 for 0.1%";
     assert_eq!(w, [want]);
 }
+
+#[test]
+fn a_windowed_falloff_makes_the_cutoff_count_on_every_path() {
+    let text = base_with(
+        "size = [32, 24]",
+        "size = [32, 24]\ncutoff = 0.05\nfalloff = \"windowed\"",
+    );
+    let w = load("windowed_cutoff", &text).warnings();
+    assert!(!w.iter().any(|m| m.contains("render.cutoff")), "{w:?}");
+    let notes = base_with("size = [32, 24]", "size = [32, 24]\ncutoff = 0.05");
+    let w = load("notes_cutoff", &notes).warnings();
+    assert!(
+        w.iter()
+            .any(|m| m.contains("render.cutoff = 0.05 has no effect")),
+        "{w:?}"
+    );
+}

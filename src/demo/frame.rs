@@ -41,7 +41,7 @@ impl Demo {
         }
         // The animation plays on from where it is, by the time since the
         // last swap (src/demo/panel/animation.rs).
-        if let Some(span) = self.scene.animation.span()
+        if let Some(span) = self.scene.playable_span()
             && run.panel.playing
         {
             let dt = run.last_swap.elapsed().as_secs_f32() * run.panel.speed;

@@ -267,6 +267,13 @@ fn blend(rest: Pose, samples: &[Sample]) -> Pose {
 }
 
 impl Scene {
+    /// The span of time worth playing: the keys' span, or for a scene with
+    /// particles and no keys, four lifetimes of its fountain (the demo
+    /// loops over it). None: nothing in the scene moves with time.
+    pub fn playable_span(&self) -> Option<(f32, f32)> {
+        (self.animation.span()).or_else(|| self.particles.as_ref().map(|p| (0.0, 4.0 * p.lifetime)))
+    }
+
     /// Show the instant `time` (seconds): each animated object's local
     /// transform from its tracks, then every model matrix again. A time
     /// that is not finite is refused and changes nothing.

@@ -36,7 +36,12 @@ fn the_time_slider_scrubs_and_play_pauses() {
     // "play" starts the clock again.
     d.click(&input(&scene, &r), "play");
     assert!(d.panel.playing);
-    // A scene with no tracks shows no animation section.
+    // Particles with no tracks play too, over four lifetimes.
+    let fountain = common::scene("particles.toml");
+    let rf = Renderer::new(&ctx.gl, &ctx.debug, &fountain, &Sources::Embedded, 64, 36).unwrap();
+    assert_eq!(fountain.playable_span(), Some((0.0, 4.0 * 1.8)));
+    assert!(d.find(&input(&fountain, &rf), "time (s)").is_some());
+    // A scene with nothing that moves shows no animation section.
     let still = common::scene("default.toml");
     let rs = Renderer::new(&ctx.gl, &ctx.debug, &still, &Sources::Embedded, 64, 36).unwrap();
     assert!(d.find(&input(&still, &rs), "play").is_none());

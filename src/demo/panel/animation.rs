@@ -1,5 +1,5 @@
 //! The panel's animation section (notes 01 §7; src/scene/animation.rs),
-//! shown when the scene has keyframe tracks: play or pause, scrub the time
+//! shown when the scene has keyframe tracks or particles: play or pause, scrub the time
 //! over the keys' span, and the playing speed. Scrubbing asks for
 //! `Action::Time`; while playing, the demo advances the time each frame
 //! (`advance`).
@@ -22,7 +22,7 @@ impl PanelState {
         input: &PanelInput,
         actions: &mut Vec<Action>,
     ) {
-        let Some((first, last)) = input.scene.animation.span() else {
+        let Some((first, last)) = input.scene.playable_span() else {
             return;
         };
         let clips = input.scene.animation.tracks.len();

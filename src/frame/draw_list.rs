@@ -12,7 +12,7 @@ use crate::gl::mesh::Mesh;
 use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture};
 use crate::math;
-use crate::scene::{DepthFunc, MeshSource, Scene};
+use crate::scene::{Cull, DepthFunc, MeshSource, Scene};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
 use std::collections::HashMap;
@@ -46,6 +46,8 @@ pub struct DrawItem {
     pub transparent: bool,
     /// The material's own depth test (None: `render.depth_func`).
     pub depth_func: Option<DepthFunc>,
+    /// The material's face culling (notes 01 §3.4).
+    pub cull: Cull,
     /// The centre of the mesh's bounding box, in its own space (the
     /// transparency pass sorts by the view depth of `model * centre`).
     pub centre: Vec3,
@@ -117,6 +119,7 @@ impl DrawList {
                 opacity: m.opacity,
                 transparent: m.is_transparent(),
                 depth_func: m.depth_func,
+                cull: m.cull,
                 centre: (bounds[mesh].0 + bounds[mesh].1) * 0.5,
             });
         }
@@ -144,6 +147,7 @@ impl DrawList {
             d.alpha_test = m.alpha_test.code();
             d.alpha_ref = m.alpha_ref;
             d.opacity = m.opacity;
+            d.cull = m.cull;
             d.transparent = m.is_transparent();
             d.depth_func = m.depth_func;
         }

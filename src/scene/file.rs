@@ -5,7 +5,7 @@
 use super::billboards::{BillboardFieldFile, BillboardFile};
 use super::mirrors::MirrorFile;
 use super::settings::{
-    Accumulation, AlphaTest, BillboardMode, DeferredLights, DepthFunc, Falloff, MirrorOrder,
+    Accumulation, AlphaTest, BillboardMode, Cull, DeferredLights, DepthFunc, Falloff, MirrorOrder,
     RenderPath, Shading,
 };
 use serde::Deserialize;
@@ -225,6 +225,10 @@ pub(super) struct MaterialFile {
     pub(super) opacity: f32,
     /// Overrides `render.depth_func` for this material's objects.
     pub(super) depth_func: Option<DepthFunc>,
+    /// The faces its objects cull: back (the default), front,
+    /// front_and_back, none.
+    #[serde(default)]
+    pub(super) cull: Option<Cull>,
 }
 
 fn always() -> AlphaTest {

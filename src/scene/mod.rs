@@ -42,8 +42,8 @@ pub use file::LightGrid;
 pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
 pub use settings::{
-    Accumulation, AlphaTest, BillboardKind, BillboardMode, DeferredLights, DepthFunc, Falloff,
-    MirrorOrder, RenderPath, RenderSettings, Shading,
+    Accumulation, AlphaTest, BillboardKind, BillboardMode, Cull, DeferredLights, DepthFunc,
+    Falloff, MirrorOrder, RenderPath, RenderSettings, Shading,
 };
 pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;
@@ -140,6 +140,8 @@ pub struct Material {
     pub opacity: f32,
     /// The depth test for this material's objects (None: `render.depth_func`).
     pub depth_func: Option<DepthFunc>,
+    /// The faces its objects cull (notes 01 §3.4).
+    pub cull: Cull,
 }
 
 impl Material {

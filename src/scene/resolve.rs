@@ -111,6 +111,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         alpha_ref: 0.5,
         opacity: 1.0,
         depth_func: None,
+        cull: super::Cull::Back,
     }];
     let mut material_index = HashMap::new();
     for n in names {
@@ -170,6 +171,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             alpha_ref: m.alpha_ref,
             opacity: m.opacity,
             depth_func: m.depth_func,
+            cull: m.cull.unwrap_or(super::Cull::Back),
         });
     }
     Ok((materials, material_index))

@@ -172,6 +172,34 @@ setting! {
 }
 
 setting! {
+    /// Which faces a material's objects cull (notes 01 §3.4, "Face
+    /// Culling": "can cull front, back or all faces").
+    pub enum Cull {
+        /// Faces turned away from the camera (glCullFace(GL_BACK)): the default.
+        Back = "back",
+        /// Faces turned towards it: a closed mesh shows its inside.
+        Front = "front",
+        /// Every face (GL_FRONT_AND_BACK): "effectively disables the
+        /// rasteriser for triangle based primitives".
+        FrontAndBack = "front_and_back",
+        /// No culling: both sides drawn (thin, open meshes).
+        None = "none",
+    }
+}
+
+impl Cull {
+    /// glCullFace's face, or None for glDisable(GL_CULL_FACE).
+    pub fn gl(self) -> Option<u32> {
+        match self {
+            Cull::Back => Some(glow::BACK),
+            Cull::Front => Some(glow::FRONT),
+            Cull::FrontAndBack => Some(glow::FRONT_AND_BACK),
+            Cull::None => None,
+        }
+    }
+}
+
+setting! {
     /// How a point or spot light's attenuation ends.
     pub enum Falloff {
         /// Notes 04's 1 / (Kc + Kl d + Kq d^2), which never reaches 0: the

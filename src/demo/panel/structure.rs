@@ -6,8 +6,8 @@
 use super::values::{number, vec3};
 use crate::assets;
 use crate::scene::{
-    AlphaTest, BillboardFieldFile, BillboardFile, BillboardKind, DepthFunc, Material, MeshSource,
-    Object, Scene, SplitView,
+    AlphaTest, BillboardFieldFile, BillboardFile, BillboardKind, Cull, DepthFunc, Material,
+    MeshSource, Object, Scene, SplitView,
 };
 use glam::Vec3;
 use std::path::PathBuf;
@@ -157,6 +157,12 @@ pub(super) fn material_tests(ui: &mut egui::Ui, i: usize, m: &mut Material) -> b
         changed = true;
     }
     changed |= number(ui, "alpha reference", &mut m.alpha_ref, 0.0..=1.0);
+    let cull: Vec<String> = Cull::WORDS.iter().map(|w| w.to_string()).collect();
+    let mut c = Cull::ALL.iter().position(|&x| x == m.cull).unwrap_or(0);
+    if choose(ui, "cull faces", ("cull faces", i), &cull, &mut c) {
+        m.cull = Cull::ALL[c];
+        changed = true;
+    }
     changed
 }
 

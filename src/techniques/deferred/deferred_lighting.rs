@@ -216,6 +216,15 @@ impl DeferredLighting {
             let view = f.uniforms.view * f.view.reflection;
             for i in f.draws.opaque_order(&view, f.scene.render.sort_opaque) {
                 let d = &f.draws.items[i];
+                // The material's face culling (notes 01 §3.4): back faces
+                // (the default), front faces, both, or none.
+                match d.cull.gl() {
+                    Some(face) => {
+                        gl.enable(glow::CULL_FACE);
+                        gl.cull_face(face);
+                    }
+                    None => gl.disable(glow::CULL_FACE),
+                }
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));
@@ -235,6 +244,7 @@ impl DeferredLighting {
             }
             gl.active_texture(glow::TEXTURE0);
             gl.use_program(None);
+            gl.cull_face(glow::BACK);
             gl.disable(glow::CULL_FACE);
             gl.depth_mask(true);
             gl.depth_func(glow::LESS);

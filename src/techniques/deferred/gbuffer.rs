@@ -125,6 +125,15 @@ impl RunPasses for GBufferPass {
             let view = f.uniforms.view * f.view.reflection;
             for i in f.draws.opaque_order(&view, f.scene.render.sort_opaque) {
                 let d = &f.draws.items[i];
+                // The material's face culling (notes 01 §3.4): back faces
+                // (the default), front faces, both, or none.
+                match d.cull.gl() {
+                    Some(face) => {
+                        gl.enable(glow::CULL_FACE);
+                        gl.cull_face(face);
+                    }
+                    None => gl.disable(glow::CULL_FACE),
+                }
                 // A material may test depth its own way (notes 05, "Depth Test and Operation").
                 let func = d.depth_func.unwrap_or(f.scene.render.depth_func);
                 if func != depth_func {
@@ -145,6 +154,7 @@ impl RunPasses for GBufferPass {
             gl.active_texture(glow::TEXTURE0);
             gl.disable(glow::FRAMEBUFFER_SRGB);
             gl.use_program(None);
+            gl.cull_face(glow::BACK);
             gl.disable(glow::CULL_FACE);
             gl.disable(glow::DEPTH_TEST);
             gl.depth_func(glow::LESS);

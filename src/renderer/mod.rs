@@ -23,7 +23,7 @@ use crate::gl::buffer::Buffer;
 use crate::gl::debug::DebugLog;
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Sources;
-use crate::gl::texture_buffer::max_texels;
+use crate::gl::texture_buffer::{TextureBuffer, max_texels};
 use crate::gl::{Gl, Headless};
 use crate::lighting;
 use crate::scene::{Camera, RenderSettings, Scene};
@@ -43,6 +43,9 @@ pub struct Renderer {
     targets: Targets,
     draws: DrawList,
     lights_ubo: Buffer,
+    /// Every light, for the passes that read more than the block holds
+    /// (tiled shading, the far field): written with the block.
+    lights_texture: TextureBuffer,
     meshes: FrameMeshes,
     /// The casting lights' depth maps (none when no light casts).
     shadows: ShadowMaps,
@@ -99,6 +102,7 @@ impl Renderer {
             max_lights * LIGHT_STRIDE,
             glow::DYNAMIC_DRAW,
         )?;
+        let lights_texture = TextureBuffer::new(gl, glow::RGBA32F)?;
         let mut techniques = Vec::new();
         techniques.resize_with(techniques::ALL.len(), || None);
         let mut r = Renderer {
@@ -113,6 +117,7 @@ impl Renderer {
             targets,
             draws: DrawList::new(gl, scene)?,
             lights_ubo,
+            lights_texture,
             meshes: FrameMeshes::new(gl)?,
             shadows: ShadowMaps::new(gl, scene, max_lights)?,
             sources: sources.clone(),
@@ -215,13 +220,16 @@ impl Renderer {
     }
 
     /// Write the scene's lights into the uniform buffer (as many as it
-    /// holds: a tiled frame with more reads them from a buffer texture).
+    /// holds) and all of them into the buffer texture (tiled shading and
+    /// the far field read it: a tiled frame may hold more lights than the
+    /// block). Once per change of the scene's values, not per frame.
     fn upload_lights(&mut self) {
         let bytes = self.lights.pack(&self.scene);
         let n = bytes.len().min(self.max_lights * LIGHT_STRIDE);
         if n > 0 {
             self.lights_ubo.write(&bytes[..n]);
         }
+        self.lights_texture.write(&bytes);
     }
 
     /// Reallocate the targets at a new size (nothing happens for the same
@@ -280,6 +288,7 @@ impl Renderer {
             far: camera.far,
             light_count: self.scene.lights.len().min(self.max_lights) as i32,
             lights_ubo: self.lights_ubo.id,
+            lights_texture: self.lights_texture.texture,
             output_srgb: srgb,
             output_encoded: encoded,
             viewport: [x, y, w, h],

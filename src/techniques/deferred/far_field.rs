@@ -41,7 +41,6 @@ use crate::frame::targets::{Depth, TargetDesc, scaled_size};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
-use crate::gl::texture_buffer::TextureBuffer;
 use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
@@ -134,7 +133,6 @@ struct FarField {
     program: Program,
     /// Writes each sample's error-bound terms instead (render.far_field_bound).
     bound: Program,
-    lights: TextureBuffer,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -149,11 +147,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         program.bind_uniform_block("Lights", LIGHTS_BINDING);
         shadows::setup_program(program);
     }
-    Ok(Box::new(FarField {
-        program,
-        bound,
-        lights: TextureBuffer::new(p.gl, glow::RGBA32F)?,
-    }))
+    Ok(Box::new(FarField { program, bound }))
 }
 
 /// Bind the far field's textures for tiled shading's pass and set the
@@ -203,7 +197,6 @@ impl RunPasses for FarField {
         // The view's rectangle at 1/k: a split view's corner at x / k.
         let (x, y, w, h) = f.view.rect(target.width * k, target.height * k);
         let (sw, sh) = scaled_size(w, h, k as u32);
-        self.lights.write(&f.lights.pack(f.scene));
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
             gl.viewport(x / k, y / k, sw, sh);
@@ -213,7 +206,7 @@ impl RunPasses for FarField {
             p.use_program();
             gbuffer::bind_for_reading(gl, p, f.targets.get(gbuffer::NAME), u);
             gl.active_texture(glow::TEXTURE0 + unit::TILED_LIGHTS);
-            gl.bind_texture(glow::TEXTURE_BUFFER, Some(self.lights.texture));
+            gl.bind_texture(glow::TEXTURE_BUFFER, Some(u.lights_texture));
             gl.active_texture(glow::TEXTURE0);
             p.set_i32("u_light_data", unit::TILED_LIGHTS as i32);
             p.set_mat4("u_mvp", &Mat4::IDENTITY);

@@ -16,9 +16,11 @@
 //!    every pixel shades; the lights with a shadow map (at most eight) are
 //!    shaded everywhere too, in a loop of their own, the only one that
 //!    samples shadow maps (the shader says why).
-//! 2. Upload, through buffer textures (src/gl/texture_buffer.rs): every
-//!    light (four RGBA32F texels each, the std140 `Light`), and in one R32UI
-//!    buffer each cluster's (offset, count) followed by the light numbers.
+//! 2. Upload, through a buffer texture (src/gl/texture_buffer.rs), each
+//!    cluster's (offset, count) followed by the light numbers, in one R32UI
+//!    buffer. Every light is in the renderer's own buffer texture (four
+//!    RGBA32F texels each, the std140 `Light`; `FrameUniforms::
+//!    lights_texture`), written with the uniform block when the lights change.
 //!    A uniform block would stop at 256 lights on the smallest GL 3.3; a
 //!    buffer texture holds 16384 even there.
 //! 3. One full-screen triangle: each pixel finds its tile from
@@ -156,7 +158,6 @@ struct TiledShading {
     /// Drawing the far field's error bound instead of the light
     /// (`render.far_field_bound`, set by `gloss bench`).
     far_field_bound: Program,
-    lights: TextureBuffer,
     /// Each cluster's (offset, count), then the light numbers.
     clusters: TextureBuffer,
 }
@@ -182,7 +183,6 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         program,
         with_far_field,
         far_field_bound,
-        lights: TextureBuffer::new(p.gl, glow::RGBA32F)?,
         clusters: TextureBuffer::new(p.gl, glow::R32UI)?,
     }))
 }
@@ -213,8 +213,8 @@ impl RunPasses for TiledShading {
         // 1. Bin the lights for this view.
         let (grid, bins) = bin_view(f, (w as u32, h as u32), max_texels(gl));
 
-        // 2. Upload the lights and the lists.
-        self.lights.write(&f.lights.pack(f.scene));
+        // 2. Upload the lists (the lights are the frame's buffer texture,
+        // written when the scene's lights change: FrameUniforms::lights_texture).
         let lists: Vec<u8> = (bins.clusters.iter().flatten())
             .chain(&bins.indices)
             .flat_map(|v| v.to_ne_bytes())
@@ -238,12 +238,12 @@ impl RunPasses for TiledShading {
 
             p.use_program();
             gbuffer::bind_for_reading(gl, p, f.targets.get(gbuffer::NAME), u);
-            for (name, unit, buffer) in [
-                ("u_light_data", unit::TILED_LIGHTS, &self.lights),
-                ("u_clusters", unit::TILED_CLUSTERS, &self.clusters),
+            for (name, unit, texture) in [
+                ("u_light_data", unit::TILED_LIGHTS, u.lights_texture),
+                ("u_clusters", unit::TILED_CLUSTERS, self.clusters.texture),
             ] {
                 gl.active_texture(glow::TEXTURE0 + unit);
-                gl.bind_texture(glow::TEXTURE_BUFFER, Some(buffer.texture));
+                gl.bind_texture(glow::TEXTURE_BUFFER, Some(texture));
                 p.set_i32(name, unit as i32);
             }
             p.set_mat4("u_mvp", &Mat4::IDENTITY);

@@ -13,7 +13,6 @@ pub mod live;
 pub mod mesh;
 pub mod mip_target;
 pub mod osmesa;
-pub mod patches;
 pub mod program;
 pub mod query;
 pub mod stream;

@@ -1,7 +1,11 @@
-//! A vertex buffer rewritten every frame (notes 01 §1.3: a buffer written
-//! through a mapped pointer, beside glBufferSubData): a VAO over one VBO,
-//! its attributes given as (location, floats, byte offset) with one stride.
-//! Each write replaces the whole contents, in one of two ways:
+//! A vertex buffer without indices, written whole: every frame (the
+//! particles) or once (the tessellated terrain's patch corners). Notes 01
+//! §1.3: a buffer written through a mapped pointer, beside
+//! glBufferSubData. A VAO over one VBO, its attributes given as (location,
+//! floats, byte offset) with one stride, drawn with glDrawArrays in any
+//! mode (GL_POINTS, GL_TRIANGLES, GL_PATCHES: the pass that draws patches
+//! sets GL_PATCH_VERTICES itself). Each write replaces the whole contents,
+//! in one of two ways:
 //!
 //! - `write_mapped`: glMapBufferRange with GL_MAP_WRITE_BIT |
 //!   GL_MAP_INVALIDATE_BUFFER_BIT (the old contents may be dropped, so the

@@ -34,8 +34,8 @@ use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::LIGHTS_BINDING;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::Gl;
-use crate::gl::patches::Patches;
 use crate::gl::program::Program;
+use crate::gl::stream::StreamBuffer;
 use crate::gl::texture::{Sampling, Texture};
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
@@ -112,9 +112,16 @@ struct Tessellation {
     gl: Gl,
     /// None below GL 4.0.
     program: Option<Program>,
-    /// The grid and the displacement map, made at the first frame (they
-    /// depend on the scene) and again when it changes.
-    made: RefCell<Option<(crate::scene::tessellation::Tessellation, Patches, Texture)>>,
+    /// The grid's corners (and how many) and the displacement map, made at
+    /// the first frame (they depend on the scene) and again when it changes.
+    made: RefCell<
+        Option<(
+            crate::scene::tessellation::Tessellation,
+            StreamBuffer,
+            i32,
+            Texture,
+        )>,
+    >,
     warned: Cell<bool>,
 }
 
@@ -162,11 +169,15 @@ impl RunPasses for Tessellation {
             return;
         };
         let mut made = self.made.borrow_mut();
-        if made.as_ref().is_none_or(|(had, _, _)| had != t) {
+        if made.as_ref().is_none_or(|(had, ..)| had != t) {
             let gl = &self.gl;
-            let built = Patches::upload(gl, &grid(t.size, t.patches), 4).and_then(|patches| {
+            // The corners at location 0, written once.
+            let built = StreamBuffer::new(gl, &[(0, 3, 0)], 12).and_then(|corners| {
+                let g = grid(t.size, t.patches);
+                let bytes: Vec<u8> = g.iter().flatten().flat_map(|x| x.to_ne_bytes()).collect();
+                corners.write_subdata(&bytes);
                 let map = Texture::load(gl, &t.displacement, false, Sampling::TRILINEAR_REPEAT)?;
-                Ok((t.clone(), patches, map))
+                Ok((t.clone(), corners, g.len() as i32, map))
             });
             match built {
                 Ok(m) => *made = Some(m),
@@ -176,7 +187,7 @@ impl RunPasses for Tessellation {
                 }
             }
         }
-        let (_, patches, map) = made.as_ref().expect("made above");
+        let (_, corners, count, map) = made.as_ref().expect("made above");
         let (gl, u) = (f.gl, f.uniforms);
         let target = f.targets.get(world_target(f.scene));
         unsafe {
@@ -208,7 +219,7 @@ impl RunPasses for Tessellation {
             gl.bind_texture(glow::TEXTURE_2D, Some(map.id));
             p.set_i32("u_height", 0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
-            patches.draw();
+            corners.draw(glow::PATCHES, *count);
 
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
             gl.bind_texture(glow::TEXTURE_2D, None);

@@ -70,23 +70,43 @@ bool same_surface(Surface s, Surface o, float eye_distance) {
         && distance(o.P, s.P) <= u_far_reach;
 }
 
+// The four samples around this pixel, as bilinear filtering takes them:
+// the first one's texel t0, and where the pixel lies between them (f).
+void far_cell(out ivec2 t0, out vec2 f) {
+    vec2 q = (gl_FragCoord.xy - u_viewport.xy) / float(u_far_scale) - 0.5;
+    t0 = ivec2(floor(q));
+    f = q - vec2(t0);
+}
+
+// Sample k (0 to 3) of those four: its texel t, its surface o, and its
+// bilinear weight; 0 when it weighs nothing or does not stand for s.
+float far_neighbour(int k, ivec2 t0, vec2 f, Surface s, float eye_distance,
+                    out ivec2 t, out Surface o) {
+    ivec2 grid = (ivec2(u_viewport.zw) + u_far_scale - 1) / u_far_scale;
+    ivec2 corner = ivec2(k & 1, k >> 1);
+    t = clamp(t0 + corner, ivec2(0), grid - 1);
+    float w = (corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y);
+    if (w <= 0.0) return 0.0;
+    o = read_geometry_texel(far_sample_texel(t));
+    return same_surface(s, o, eye_distance) ? w : 0.0;
+}
+
 // This pixel's far light times its material: interpolated (bilinearly)
 // from those of the four samples around it that stand for its surface,
 // their weights renormalised; summed here over every light when none does.
 // `eye_distance`: from the eye to s.P.
 vec3 far_field(Surface s, vec3 V, float eye_distance) {
-    ivec2 grid = (ivec2(u_viewport.zw) + u_far_scale - 1) / u_far_scale;
-    vec2 q = (gl_FragCoord.xy - u_viewport.xy) / float(u_far_scale) - 0.5;
-    ivec2 t0 = ivec2(floor(q));
-    vec2 f = q - vec2(t0);
+    ivec2 t0;
+    vec2 f;
+    far_cell(t0, f);
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
     float weight = 0.0;
     for (int k = 0; k < 4; ++k) {
-        ivec2 corner = ivec2(k & 1, k >> 1);
-        ivec2 t = clamp(t0 + corner, ivec2(0), grid - 1);
-        float w = (corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y);
-        if (w <= 0.0 || !same_surface(s, read_geometry_texel(far_sample_texel(t)), eye_distance)) continue;
+        ivec2 t;
+        Surface o;
+        float w = far_neighbour(k, t0, f, s, eye_distance, t, o);
+        if (w <= 0.0) continue;
         diffuse += w * texelFetch(u_far_diffuse, far_texel(t), 0).rgb;
         specular += w * texelFetch(u_far_specular, far_texel(t), 0).rgb;
         weight += w;
@@ -194,22 +214,19 @@ float far_support_radius(ivec2 t, Surface o) {
 // weighted distances to the samples. 0 where it sums its own far part;
 // 1e30 where a light straddles the plane or a term overflowed.
 float far_field_bound(Surface s, float eye_distance) {
-    ivec2 grid = (ivec2(u_viewport.zw) + u_far_scale - 1) / u_far_scale;
-    vec2 q = (gl_FragCoord.xy - u_viewport.xy) / float(u_far_scale) - 0.5;
-    ivec2 t0 = ivec2(floor(q));
-    vec2 f = q - vec2(t0);
+    ivec2 t0;
+    vec2 f;
+    far_cell(t0, f);
     float weight = 0.0;
     vec3 centre = vec3(0.0);    // sum of w_k (x_k - x)
     float spread2 = 0.0;        // sum of w_k |x_k - x|^2
     vec4 worst = vec4(0.0);
     vec4 extra = vec4(0.0);
     for (int k = 0; k < 4; ++k) {
-        ivec2 corner = ivec2(k & 1, k >> 1);
-        ivec2 t = clamp(t0 + corner, ivec2(0), grid - 1);
-        float w = (corner.x == 1 ? f.x : 1.0 - f.x) * (corner.y == 1 ? f.y : 1.0 - f.y);
+        ivec2 t;
+        Surface o;
+        float w = far_neighbour(k, t0, f, s, eye_distance, t, o);
         if (w <= 0.0) continue;
-        Surface o = read_geometry_texel(far_sample_texel(t));
-        if (!same_surface(s, o, eye_distance)) continue;
         vec3 dx = o.P - s.P;
         weight += w;
         centre += w * dx;

@@ -8,9 +8,8 @@
 
 use crate::frame::targets::LIGHT_ACCUMULATION;
 use crate::gl::Headless;
-use crate::gl::program::Sources;
 use crate::lighting::{srgb_decode, srgb_encode};
-use crate::renderer::Renderer;
+use crate::renderer::{Output, render_scene};
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 
@@ -45,16 +44,7 @@ pub fn far_field_pixels(
     }
     let mut s = scene.clone();
     s.render.far_field_bound = true;
-    let (w, h) = s.render.size;
-    let mut r = Renderer::new(
-        &ctx.gl,
-        &ctx.debug,
-        &s,
-        &Sources::Embedded,
-        w as i32,
-        h as i32,
-    )?;
-    r.render(&s.camera)?;
+    let r = render_scene(ctx, &s, Output::Srgb8)?;
     let Some(light) = r.targets().find(LIGHT_ACCUMULATION) else {
         return Ok(None);
     };

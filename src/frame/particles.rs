@@ -49,16 +49,21 @@ pub fn velocity(p: &Particles, i: u64) -> Vec3 {
     (axis * cos + (side.0 * phi.cos() + side.1 * phi.sin()) * sin) * p.speed
 }
 
-/// The particles living at time `t`, oldest first (at most `p.count`).
-pub fn alive(p: &Particles, t: f32) -> Vec<Particle> {
+/// The numbers of the particles living at time `t`: born at i / rate in
+/// (t - lifetime, t], the newest `p.count` of them.
+pub fn alive_range(p: &Particles, t: f32) -> std::ops::Range<u64> {
     if t.is_nan() || t < 0.0 || p.rate <= 0.0 {
-        return Vec::new();
+        return 0..0;
     }
-    // Born at i / rate in (t - lifetime, t].
     let first = (((t - p.lifetime) * p.rate).floor() + 1.0).max(0.0) as u64;
     let last = (t * p.rate).floor() as u64;
     let first = first.max((last + 1).saturating_sub(p.count as u64));
-    (first..=last)
+    first..last + 1
+}
+
+/// The particles living at time `t`, oldest first (at most `p.count`).
+pub fn alive(p: &Particles, t: f32) -> Vec<Particle> {
+    alive_range(p, t)
         .map(|i| {
             let age = t - i as f32 / p.rate;
             let v = velocity(p, i);

@@ -60,7 +60,8 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let Some(p) = &scene.particles else {
         return vec![];
     };
-    let n = particles::alive(p, scene.animation.time).len();
+    let living = particles::alive_range(p, scene.animation.time);
+    let n = (living.end - living.start) as usize;
     let (form, bytes) = if p.geometry_shader {
         (
             "points made quads by the geometry shader",

@@ -17,6 +17,9 @@
 //!   (1 on the tree, 0 around it, a one-texel soft edge); the transparent
 //!   texels keep the sprite's colour so filtering brings in no dark fringe.
 //!
+//! * `arm.glb`: a skinned arm, three joints and two clips, as binary glTF
+//!   2.0 (`arm.rs` says how it is built).
+//!
 //! Run with `cargo run --release --example gen_assets`. Output is deterministic.
 
 use anyhow::{Context, Result};
@@ -24,6 +27,8 @@ use glam::{Vec2, Vec3};
 use gloss::geometry::{self, MeshData, Vertex};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+
+mod arm;
 
 fn main() -> Result<()> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/assets");
@@ -62,6 +67,10 @@ fn main() -> Result<()> {
         false,
         "displaced icosphere, 20480 triangles, no normals (scenes/logl-like.toml)",
     )?;
+    let glb = dir.join("arm.glb");
+    std::fs::write(&glb, geometry::write_glb(&arm::arm()))
+        .with_context(|| format!("writing {}", glb.display()))?;
+    println!("wrote {}", glb.display());
     Ok(())
 }
 

@@ -9,7 +9,9 @@
 //!   notes 04, and the bounding radius;
 //! * `normals`: smooth normals (notes 01 §8.1) and tangents for bump mapping
 //!   (notes 01 §8.4);
-//! * `obj`: Wavefront OBJ files, loaded through tobj.
+//! * `obj`: Wavefront OBJ files, loaded through tobj;
+//! * `skin`: skinned meshes (notes 01 §7.1): skin, skeleton, clips, posing;
+//! * `gltf`, `gltf_write`: skinned meshes read from and written to glTF 2.0.
 //!
 //! Every public function is re-exported here: use `crate::geometry::cube`,
 //! not the file it lives in.
@@ -26,11 +28,16 @@
 //!   notes 01 §8.4 is `B = cross(N, T) * tangent.w` (direction of increasing v).
 //!   Every procedural mesh has w = +1.
 
+mod gltf;
+mod gltf_write;
 mod normals;
 mod obj;
 mod shapes;
+pub mod skin;
 mod volumes;
 
+pub use gltf::{MAX_GLTF_BYTES, MAX_GLTF_VERTICES, load_gltf};
+pub use gltf_write::write_glb;
 pub use normals::{compute_normals, compute_tangents};
 pub use obj::{MAX_OBJ_BYTES, MAX_OBJ_VERTICES, load_obj};
 pub use shapes::{cone, cube, cylinder, fullscreen_triangle, icosphere, plane, torus, uv_sphere};

@@ -157,6 +157,16 @@ impl<T: Keyed> Track<T> {
         })
     }
 
+    /// The keys' times, increasing.
+    pub fn times(&self) -> &[f32] {
+        &self.times
+    }
+
+    /// The keys' values, one per time.
+    pub fn values(&self) -> &[T] {
+        &self.values
+    }
+
     /// The first and last key's times.
     pub fn span(&self) -> (f32, f32) {
         (self.times[0], self.times[self.times.len() - 1])

@@ -1,0 +1,351 @@
+//! Skinned meshes from glTF 2.0 files (.glb, or .gltf with its .bin beside
+//! it), read with the `gltf` crate: the first node that has both a mesh and
+//! a skin gives the skin (every triangle primitive of its mesh, merged), its
+//! joints and inverse bind matrices, the whole node tree, and every
+//! animation as a [`Clip`].
+//!
+//! What is refused, with an error that names the file: a file over 64 MiB
+//! or with more than 16 million vertices, a malformed file, no skinned
+//! mesh, a primitive that is not triangles or lacks POSITION, JOINTS_0 or
+//! WEIGHTS_0, a joint index out of range, NaN or infinite numbers, a vertex
+//! whose weights are all zero (naming the mesh and the vertex), a node with
+//! two parents, buffers as data: URIs, and CUBICSPLINE animation samplers
+//! (gloss's cubic keys are Catmull-Rom; a clip with explicit tangents is
+//! refused rather than played differently). Weights that do not sum to 1
+//! are scaled so that they do, and the returned warnings say so.
+
+use super::skin::{Channel, ChannelTrack, Clip, SkinNode, SkinnedMesh};
+use super::{MeshData, Vertex, compute_normals, compute_tangents};
+use crate::assets;
+use crate::math::keyframes::{Interpolation, Track};
+use crate::math::skinning::{MAX_INFLUENCES, normalised_weights};
+use anyhow::{Result, anyhow, bail};
+use glam::{Mat4, Quat, Vec3};
+use gltf::animation::util::ReadOutputs;
+use std::path::Path;
+
+/// Largest glTF file (and each of its .bin buffers) `load_gltf` reads.
+pub const MAX_GLTF_BYTES: u64 = 64 * 1024 * 1024;
+/// Most vertices `load_gltf` accepts in the skinned mesh.
+pub const MAX_GLTF_VERTICES: usize = 16_000_000;
+
+/// Read the skinned mesh in the glTF file at `path`; also returns warnings
+/// (weights renormalised, morph targets ignored).
+pub fn load_gltf(path: &Path) -> Result<(SkinnedMesh, Vec<String>)> {
+    let name = path.display().to_string();
+    let bytes = assets::read(path, MAX_GLTF_BYTES, "glTF file")?;
+    // The gltf crate checks slices as it reads; this catches anything it
+    // did not, so that a hostile file is an error and never a crash.
+    let result = std::panic::catch_unwind(|| read(&bytes, path, &name));
+    match result {
+        Ok(r) => r,
+        Err(_) => bail!("malformed glTF file {name}: the gltf crate could not read it"),
+    }
+}
+
+/// `load_gltf` on bytes already read; `path` locates external buffers.
+pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<String>)> {
+    let file =
+        gltf::Gltf::from_slice(bytes).map_err(|e| anyhow!("malformed glTF file {name}: {e}"))?;
+    let mut warnings = Vec::new();
+    let mut buffers: Vec<Vec<u8>> = Vec::new();
+    for b in file.buffers() {
+        let data = match b.source() {
+            gltf::buffer::Source::Bin => file.blob.clone().ok_or_else(|| {
+                anyhow!(
+                    "glTF file {name}: buffer {} is the binary chunk, which the file lacks",
+                    b.index()
+                )
+            })?,
+            gltf::buffer::Source::Uri(uri) if uri.starts_with("data:") => bail!(
+                "glTF file {name}: buffer {} is a data: URI, which gloss does not read; write a .glb",
+                b.index()
+            ),
+            gltf::buffer::Source::Uri(uri) => {
+                let at = path.parent().unwrap_or(Path::new("")).join(uri);
+                assets::read(&at, MAX_GLTF_BYTES, "glTF buffer")?.into_owned()
+            }
+        };
+        if data.len() < b.length() {
+            bail!(
+                "glTF file {name}: buffer {} holds {} bytes but says it has {}",
+                b.index(),
+                data.len(),
+                b.length()
+            );
+        }
+        buffers.push(data);
+    }
+    let get = |b: gltf::Buffer| buffers.get(b.index()).map(|d| d.as_slice());
+
+    let node = file
+        .nodes()
+        .find(|n| n.mesh().is_some() && n.skin().is_some())
+        .ok_or_else(|| anyhow!("glTF file {name} has no skinned mesh (no node with both a mesh and a skin); gloss reads static meshes from OBJ files"))?;
+    let (mesh, skin) = (node.mesh().unwrap(), node.skin().unwrap());
+    let mesh_name = mesh
+        .name()
+        .map_or(format!("mesh {}", mesh.index()), |n| format!("mesh '{n}'"));
+    let joint_count = skin.joints().count();
+    if joint_count == 0 || joint_count > u16::MAX as usize + 1 {
+        bail!("glTF file {name}: the skin has {joint_count} joints (1 to 65536 allowed)");
+    }
+
+    let mut data = MeshData::default();
+    let (mut joints, mut weights) = (Vec::new(), Vec::new());
+    let mut has_normals = true;
+    let (mut renormalised, mut first_renormalised) = (0usize, None);
+    for prim in mesh.primitives() {
+        let what = format!("glTF file {name}: {mesh_name} primitive {}", prim.index());
+        if prim.mode() != gltf::mesh::Mode::Triangles {
+            bail!("{what} is {:?}, not triangles", prim.mode());
+        }
+        if prim.morph_targets().len() > 0 {
+            warnings.push(format!("{what}: morph targets are ignored"));
+        }
+        let count = prim
+            .get(&gltf::Semantic::Positions)
+            .map_or(0, |a| a.count());
+        if data.vertices.len() + count > MAX_GLTF_VERTICES {
+            bail!("glTF file {name} is too large: more than {MAX_GLTF_VERTICES} vertices");
+        }
+        let r = prim.reader(get);
+        let missing = |attr: &str| anyhow!("{what} has no {attr} (or it lies outside its buffer)");
+        let positions: Vec<[f32; 3]> = r
+            .read_positions()
+            .ok_or_else(|| missing("POSITION"))?
+            .collect();
+        let n = positions.len();
+        let normals: Option<Vec<[f32; 3]>> = r.read_normals().map(|x| x.collect());
+        let uvs: Option<Vec<[f32; 2]>> = r.read_tex_coords(0).map(|x| x.into_f32().collect());
+        let js: Vec<[u16; 4]> = r
+            .read_joints(0)
+            .ok_or_else(|| missing("JOINTS_0"))?
+            .into_u16()
+            .collect();
+        let ws: Vec<[f32; 4]> = r
+            .read_weights(0)
+            .ok_or_else(|| missing("WEIGHTS_0"))?
+            .into_f32()
+            .collect();
+        if js.len() != n || ws.len() != n {
+            bail!(
+                "{what}: {n} positions but {} JOINTS_0 and {} WEIGHTS_0",
+                js.len(),
+                ws.len()
+            );
+        }
+        if normals.as_ref().is_some_and(|v| v.len() != n)
+            || uvs.as_ref().is_some_and(|v| v.len() != n)
+        {
+            bail!("{what}: NORMAL or TEXCOORD_0 has a count other than POSITION's {n}");
+        }
+        has_normals &= normals.is_some();
+        let base = data.vertices.len();
+        for i in 0..n {
+            let vertex = base + i;
+            let at = format!("glTF file {name}: {mesh_name} vertex {vertex}");
+            let p = positions[i];
+            let nrm = normals.as_ref().map_or([0.0; 3], |v| v[i]);
+            let uv = uvs.as_ref().map_or([0.0; 2], |v| [v[i][0], 1.0 - v[i][1]]);
+            if !p.iter().chain(&nrm).chain(&uv).all(|x| x.is_finite()) {
+                bail!("{at}: a position, normal or uv is not finite");
+            }
+            let (w, scaled) = normalised_weights(&at, ws[i])?;
+            if scaled {
+                renormalised += 1;
+                first_renormalised.get_or_insert((vertex, ws[i].iter().sum::<f32>()));
+            }
+            let mut j = js[i];
+            for k in 0..MAX_INFLUENCES {
+                if w[k] == 0.0 {
+                    // Unused: point it at joint 0, so no shader reads past the array.
+                    j[k] = 0;
+                } else if j[k] as usize >= joint_count {
+                    bail!(
+                        "{at}: joint {} is out of range (the skin has {joint_count} joints)",
+                        j[k]
+                    );
+                }
+            }
+            data.vertices.push(Vertex {
+                position: p,
+                normal: nrm,
+                uv,
+                tangent: [1.0, 0.0, 0.0, 1.0],
+            });
+            joints.push(j);
+            weights.push(w);
+        }
+        match r.read_indices() {
+            Some(ix) => {
+                let ix: Vec<u32> = ix.into_u32().collect();
+                if ix.len() % 3 != 0 {
+                    bail!("{what} has a partial triangle ({} indices)", ix.len());
+                }
+                if let Some(bad) = ix.iter().find(|&&i| i as usize >= n) {
+                    bail!("{what}: index {bad} is out of range ({n} vertices)");
+                }
+                data.indices.extend(ix.iter().map(|&i| i + base as u32));
+            }
+            None => data.indices.extend((0..n as u32).map(|i| i + base as u32)),
+        }
+    }
+    if data.indices.is_empty() {
+        bail!("glTF file {name}: {mesh_name} has no triangles");
+    }
+    if let Some((v, sum)) = first_renormalised {
+        warnings.push(format!(
+            "glTF file {name}: {mesh_name}: the weights of {renormalised} vertices do not sum to 1 (vertex {v}: {sum}); scaled so that they do"
+        ));
+    }
+    if !has_normals {
+        compute_normals(&mut data);
+    }
+    compute_tangents(&mut data);
+
+    let nodes = read_nodes(&file, name)?;
+    let inverse_bind: Vec<Mat4> = match skin.reader(get).read_inverse_bind_matrices() {
+        Some(m) => m.map(|c| Mat4::from_cols_array_2d(&c)).collect(),
+        None => vec![Mat4::IDENTITY; joint_count],
+    };
+    if inverse_bind.len() != joint_count || !inverse_bind.iter().all(|m| m.is_finite()) {
+        bail!(
+            "glTF file {name}: the skin's inverse bind matrices are not {joint_count} finite matrices"
+        );
+    }
+    let clips = read_clips(&file, name, &get, &mut warnings)?;
+    let skinned = SkinnedMesh {
+        mesh: data,
+        joints,
+        weights,
+        nodes,
+        joint_nodes: skin.joints().map(|j| j.index()).collect(),
+        inverse_bind,
+        mesh_node: node.index(),
+        clips,
+    };
+    if !skinned.node_globals(None, 0.0)[skinned.mesh_node].is_finite()
+        || skinned.node_globals(None, 0.0)[skinned.mesh_node].determinant() == 0.0
+    {
+        bail!("glTF file {name}: the mesh node's transform is singular");
+    }
+    Ok((skinned, warnings))
+}
+
+/// Every node's rest transform and parent; a node with two parents, or a
+/// cycle, is an error.
+fn read_nodes(file: &gltf::Gltf, name: &str) -> Result<Vec<SkinNode>> {
+    let mut nodes: Vec<SkinNode> = (file.nodes())
+        .map(|n| {
+            let (t, r, s) = n.transform().decomposed();
+            SkinNode {
+                name: n
+                    .name()
+                    .map_or(format!("node {}", n.index()), str::to_owned),
+                parent: None,
+                translation: Vec3::from(t),
+                rotation: Quat::from_array(r),
+                scale: Vec3::from(s),
+            }
+        })
+        .collect();
+    for n in file.nodes() {
+        for c in n.children() {
+            if nodes[c.index()].parent.replace(n.index()).is_some() {
+                bail!("glTF file {name}: node {} has two parents", c.index());
+            }
+        }
+    }
+    for (i, n) in nodes.iter().enumerate() {
+        if !(n.translation.is_finite() && n.rotation.is_finite() && n.scale.is_finite()) {
+            bail!("glTF file {name}: node {i}'s transform is not finite");
+        }
+        let mut up = n.parent;
+        for _ in 0..=nodes.len() {
+            match up {
+                None => break,
+                Some(p) if p == i => bail!("glTF file {name}: node {i} is its own ancestor"),
+                Some(p) => up = nodes[p].parent,
+            }
+        }
+    }
+    for n in &mut nodes {
+        n.rotation = n.rotation.normalize();
+    }
+    Ok(nodes)
+}
+
+fn read_clips<'s>(
+    file: &gltf::Gltf,
+    name: &str,
+    get: &(impl Fn(gltf::Buffer) -> Option<&'s [u8]> + Clone),
+    warnings: &mut Vec<String>,
+) -> Result<Vec<Clip>> {
+    let mut clips = Vec::new();
+    for a in file.animations() {
+        let clip_name = a
+            .name()
+            .map_or(format!("animation {}", a.index()), str::to_owned);
+        let mut channels = Vec::new();
+        for ch in a.channels() {
+            let what = format!(
+                "glTF file {name}: animation '{clip_name}' channel {}",
+                ch.index()
+            );
+            let interpolation = match ch.sampler().interpolation() {
+                gltf::animation::Interpolation::Step => Interpolation::Step,
+                gltf::animation::Interpolation::Linear => Interpolation::Linear,
+                gltf::animation::Interpolation::CubicSpline => bail!(
+                    "{what}: CUBICSPLINE samplers are not read by gloss (use LINEAR or STEP keys)"
+                ),
+            };
+            let r = ch.reader(get.clone());
+            let times: Vec<f32> = r
+                .read_inputs()
+                .ok_or_else(|| anyhow!("{what}: its key times lie outside their buffer"))?
+                .collect();
+            let outputs = r
+                .read_outputs()
+                .ok_or_else(|| anyhow!("{what}: its key values lie outside their buffer"))?;
+            let track = match outputs {
+                ReadOutputs::Translations(v) => ChannelTrack::Translation(Track::new(
+                    &what,
+                    times,
+                    v.map(Vec3::from).collect(),
+                    interpolation,
+                )?),
+                ReadOutputs::Scales(v) => ChannelTrack::Scale(Track::new(
+                    &what,
+                    times,
+                    v.map(Vec3::from).collect(),
+                    interpolation,
+                )?),
+                ReadOutputs::Rotations(v) => ChannelTrack::Rotation(Track::new(
+                    &what,
+                    times,
+                    v.into_f32()
+                        .map(|q| Quat::from_array(q).normalize())
+                        .collect(),
+                    interpolation,
+                )?),
+                ReadOutputs::MorphTargetWeights(_) => {
+                    warnings.push(format!("{what}: morph target weights are ignored"));
+                    continue;
+                }
+            };
+            channels.push(Channel {
+                node: ch.target().node().index(),
+                track,
+            });
+        }
+        clips.push(Clip {
+            name: clip_name,
+            channels,
+        });
+    }
+    Ok(clips)
+}
+
+#[cfg(test)]
+mod tests;

@@ -10,7 +10,7 @@
 //!
 //! Two clips, linear keys:
 //! * `wave`: over 2 s the shoulder lifts 30°, the elbow bends 90° and the
-//!   wrist 40°, and all come back;
+//!   wrist 40°, and over 2 s more all come back;
 //! * `twist`: over 2 s the elbow turns the forearm about its own axis, 0° to
 //!   180° (keys every 90°, so each step is the shortest arc). At 180° linear
 //!   blending squashes the tube at the elbow to its axis (the "candy
@@ -113,8 +113,9 @@ fn node(name: &str, parent: Option<usize>, x: f32) -> SkinNode {
     }
 }
 
-fn rotation(node: usize, axis: Vec3, degrees: &[f32]) -> Channel {
-    let times = (0..degrees.len()).map(|i| i as f32).collect();
+/// Keys every `step` seconds from 0.
+fn rotation(node: usize, axis: Vec3, step: f32, degrees: &[f32]) -> Channel {
+    let times = (0..degrees.len()).map(|i| i as f32 * step).collect();
     let values = (degrees.iter())
         .map(|d| Quat::from_axis_angle(axis, d.to_radians()))
         .collect();
@@ -147,14 +148,14 @@ pub fn arm() -> SkinnedMesh {
             Clip {
                 name: "wave".into(),
                 channels: vec![
-                    rotation(1, Vec3::Z, &[0.0, 30.0, 0.0]),
-                    rotation(2, Vec3::Z, &[0.0, 90.0, 0.0]),
-                    rotation(3, Vec3::Z, &[0.0, 40.0, 0.0]),
+                    rotation(1, Vec3::Z, 2.0, &[0.0, 30.0, 0.0]),
+                    rotation(2, Vec3::Z, 2.0, &[0.0, 90.0, 0.0]),
+                    rotation(3, Vec3::Z, 2.0, &[0.0, 40.0, 0.0]),
                 ],
             },
             Clip {
                 name: "twist".into(),
-                channels: vec![rotation(2, Vec3::X, &[0.0, 90.0, 180.0])],
+                channels: vec![rotation(2, Vec3::X, 1.0, &[0.0, 90.0, 180.0])],
             },
         ],
     }

@@ -6,6 +6,7 @@
 //! passes skip the `transparent` items; the transparency pass draws them.
 
 use crate::frame::billboards::BillboardDraws;
+use crate::frame::skins::SkinDraw;
 use crate::geometry::MeshData;
 use crate::gl::Gl;
 use crate::gl::mesh::Mesh;
@@ -51,6 +52,8 @@ pub struct DrawItem {
     /// The centre of the mesh's bounding box, in its own space (the
     /// transparency pass sorts by the view depth of `model * centre`).
     pub centre: Vec3,
+    /// Index into `DrawList::skins` for a skinned object.
+    pub skin: Option<usize>,
 }
 
 /// Every object of the scene, with the meshes and textures they share.
@@ -62,6 +65,8 @@ pub struct DrawList {
     pub bounds: Vec<(Vec3, Vec3)>,
     /// The scene's billboards (src/frame/billboards.rs).
     pub billboards: BillboardDraws,
+    /// The skinned objects (src/frame/skins.rs), each with its own mesh.
+    pub skins: Vec<SkinDraw>,
 }
 
 impl DrawList {
@@ -72,8 +77,17 @@ impl DrawList {
         let mut texture_index: HashMap<PathBuf, usize> = HashMap::new();
         let mut items = Vec::new();
         let mut bounds = Vec::new();
+        let mut skins = Vec::new();
         for o in &scene.objects {
             let mesh = match mesh_index.get(&o.mesh) {
+                // A skinned object poses its own copy of the skin.
+                _ if o.skin.is_some() => {
+                    let s = o.skin.as_ref().unwrap();
+                    skins.push(SkinDraw::new(gl, items.len(), s)?);
+                    bounds.push(mesh_bounds(&s.mesh.mesh));
+                    meshes.push(Mesh::upload_dynamic(gl, &s.mesh.mesh)?);
+                    meshes.len() - 1
+                }
                 Some(&i) => i,
                 None => {
                     let data = crate::scene::meshes::mesh_data(&o.mesh)?;
@@ -121,15 +135,34 @@ impl DrawList {
                 depth_func: m.depth_func,
                 cull: m.cull,
                 centre: (bounds[mesh].0 + bounds[mesh].1) * 0.5,
+                skin: o.skin.as_ref().map(|_| skins.len() - 1),
             });
         }
-        Ok(DrawList {
+        let mut list = DrawList {
             items,
             meshes,
             textures,
             bounds,
             billboards: BillboardDraws::new(gl, scene)?,
-        })
+            skins,
+        };
+        list.pose_skins(scene);
+        Ok(list)
+    }
+
+    /// Pose every skinned object at the scene's time (on the CPU, skin it
+    /// too; see src/frame/skins.rs) and take its posed box.
+    fn pose_skins(&mut self, scene: &Scene) {
+        for s in &mut self.skins {
+            if let Some(skin) = &scene.objects[s.item].skin {
+                s.skin = skin.clone();
+            }
+            let d = &mut self.items[s.item];
+            let time = scene.animation.time;
+            let b = s.pose(time, scene.render.skinning_on, &self.meshes[d.mesh]);
+            self.bounds[d.mesh] = b;
+            d.centre = (b.0 + b.1) * 0.5;
+        }
     }
 
     /// Take the objects' model matrices and the materials' colours and
@@ -151,6 +184,7 @@ impl DrawList {
             d.transparent = m.is_transparent();
             d.depth_func = m.depth_func;
         }
+        self.pose_skins(scene);
     }
 
     /// The corners of every opaque object's box, in world space: what a

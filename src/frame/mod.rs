@@ -31,6 +31,7 @@ pub mod particles;
 pub mod plan;
 pub mod post;
 pub mod shadows;
+pub mod skins;
 pub mod targets;
 pub mod technique;
 pub mod timing;

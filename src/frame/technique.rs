@@ -117,6 +117,20 @@ impl Programs<'_> {
             .collect();
         Program::new(self.gl, self.sources, stages, &all)
     }
+
+    /// `build_with`, for a program whose vertex outputs `varyings` are
+    /// captured by transform feedback (`Program::with_feedback`).
+    pub fn build_feedback(
+        &self,
+        stages: &[(u32, &str)],
+        defines: &[(&str, String)],
+        varyings: &[&str],
+    ) -> Result<Program> {
+        let all: Vec<(&str, String)> = (self.defines.iter().cloned())
+            .chain(defines.iter().cloned())
+            .collect();
+        Program::with_feedback(self.gl, self.sources, stages, &all, varyings)
+    }
 }
 
 /// What a pass is given: the scene, this frame's values, and the GL objects

@@ -180,7 +180,7 @@ pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<S
         match r.read_indices() {
             Some(ix) => {
                 let ix: Vec<u32> = ix.into_u32().collect();
-                if ix.len() % 3 != 0 {
+                if !ix.len().is_multiple_of(3) {
                     bail!("{what} has a partial triangle ({} indices)", ix.len());
                 }
                 if let Some(bad) = ix.iter().find(|&&i| i as usize >= n) {

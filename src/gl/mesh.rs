@@ -16,20 +16,55 @@ pub struct Mesh {
     vbo: glow::Buffer,
     ebo: glow::Buffer,
     pub index_count: i32,
+    /// How many vertices the VBO holds.
+    pub vertex_count: i32,
+}
+
+/// A vertex as the GPU holds it: position, normal, uv (8 floats).
+fn packed(data: &MeshData) -> Vec<[f32; 8]> {
+    (data.vertices.iter())
+        .map(|v: &Vertex| {
+            let (p, n, t) = (v.position, v.normal, v.uv);
+            [p[0], p[1], p[2], n[0], n[1], n[2], t[0], t[1]]
+        })
+        .collect()
 }
 
 impl Mesh {
+    /// A mesh whose vertices never change (GL_STATIC_DRAW).
     pub fn upload(gl: &Gl, data: &MeshData) -> Result<Mesh> {
+        Mesh::upload_as(gl, data, glow::STATIC_DRAW)
+    }
+
+    /// A mesh whose vertices are written again every frame: a skinned
+    /// mesh, by transform feedback (GL_DYNAMIC_COPY: the GPU writes them,
+    /// the GPU reads them) or by `write_vertices`.
+    pub fn upload_dynamic(gl: &Gl, data: &MeshData) -> Result<Mesh> {
+        Mesh::upload_as(gl, data, glow::DYNAMIC_COPY)
+    }
+
+    /// The VBO (transform feedback writes a skinned mesh's vertices into it).
+    pub fn vertex_buffer(&self) -> glow::Buffer {
+        self.vbo
+    }
+
+    /// glBufferSubData the vertices again (same count, same indices).
+    pub fn write_vertices(&self, data: &MeshData) {
+        let packed = packed(data);
+        let n = packed.len().min(self.vertex_count as usize);
+        unsafe {
+            self.gl.bind_buffer(glow::ARRAY_BUFFER, Some(self.vbo));
+            self.gl
+                .buffer_sub_data_u8_slice(glow::ARRAY_BUFFER, 0, as_bytes(&packed[..n]));
+            self.gl.bind_buffer(glow::ARRAY_BUFFER, None);
+        }
+    }
+
+    fn upload_as(gl: &Gl, data: &MeshData, usage: u32) -> Result<Mesh> {
         if data.indices.is_empty() {
             bail!("mesh has no triangles");
         }
-        // position, normal, uv: 8 floats.
-        let packed: Vec<[f32; 8]> = (data.vertices.iter())
-            .map(|v: &Vertex| {
-                let (p, n, t) = (v.position, v.normal, v.uv);
-                [p[0], p[1], p[2], n[0], n[1], n[2], t[0], t[1]]
-            })
-            .collect();
+        let packed = packed(data);
         let stride = std::mem::size_of::<[f32; 8]>() as i32;
         unsafe {
             let vao = gl
@@ -46,7 +81,7 @@ impl Mesh {
             super::live::made(super::live::Kind::Buffer);
             gl.bind_vertex_array(Some(vao));
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
-            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&packed), glow::STATIC_DRAW);
+            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&packed), usage);
             gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
             gl.buffer_data_u8_slice(
                 glow::ELEMENT_ARRAY_BUFFER,
@@ -67,6 +102,7 @@ impl Mesh {
                 vbo,
                 ebo,
                 index_count: data.indices.len() as i32,
+                vertex_count: packed.len() as i32,
             })
         }
     }

@@ -15,6 +15,7 @@ pub mod mip_target;
 pub mod osmesa;
 pub mod program;
 pub mod query;
+pub mod skin_vertices;
 pub mod stream;
 pub mod texture;
 pub mod texture_buffer;

@@ -178,6 +178,20 @@ impl Program {
         stages: &[(u32, &str)],
         defines: &[(&str, String)],
     ) -> Result<Program> {
+        Program::with_feedback(gl, sources, stages, defines, &[])
+    }
+
+    /// `new`, for a program whose vertex shader's outputs `varyings` are
+    /// captured by transform feedback, interleaved in that order into one
+    /// buffer: glTransformFeedbackVaryings(..., GL_INTERLEAVED_ATTRIBS)
+    /// before the link, as GL requires.
+    pub fn with_feedback(
+        gl: &Gl,
+        sources: &Sources,
+        stages: &[(u32, &str)],
+        defines: &[(&str, String)],
+        varyings: &[&str],
+    ) -> Result<Program> {
         let name = stages.iter().map(|s| s.1).collect::<Vec<_>>().join(" + ");
         unsafe {
             let program = gl
@@ -202,6 +216,9 @@ impl Program {
                         );
                     }
                     gl.attach_shader(program, sh);
+                }
+                if !varyings.is_empty() {
+                    gl.transform_feedback_varyings(program, varyings, glow::INTERLEAVED_ATTRIBS);
                 }
                 gl.link_program(program);
                 if !gl.get_program_link_status(program) {
@@ -294,6 +311,15 @@ impl Program {
         self.set_i32(name, v as i32)
     }
     /// A `float name[N]` array from its first element (glUniform1fv).
+    /// glUniformMatrix4fv with `m.len()` matrices, from element 0 of the array `name`.
+    pub fn set_mat4_array(&self, name: &str, m: &[glam::Mat4]) {
+        let flat: Vec<f32> = m.iter().flat_map(|x| x.to_cols_array()).collect();
+        unsafe {
+            self.gl
+                .uniform_matrix_4_f32_slice(self.loc(name).as_ref(), false, &flat)
+        }
+    }
+
     pub fn set_f32_array(&self, name: &str, v: &[f32]) {
         unsafe { self.gl.uniform_1_f32_slice(self.loc(name).as_ref(), v) }
     }

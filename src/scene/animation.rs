@@ -267,11 +267,16 @@ fn blend(rest: Pose, samples: &[Sample]) -> Pose {
 }
 
 impl Scene {
-    /// The span of time worth playing: the keys' span, or for a scene with
+    /// The span of time worth playing: the keys' and the skinned meshes'
+    /// clips' span, or for a scene with
     /// particles and no keys, four lifetimes of its fountain (the demo
     /// loops over it). None: nothing in the scene moves with time.
     pub fn playable_span(&self) -> Option<(f32, f32)> {
-        (self.animation.span()).or_else(|| self.particles.as_ref().map(|p| (0.0, 4.0 * p.lifetime)))
+        let keys = match (self.animation.span(), self.skin_span()) {
+            (Some(a), Some(b)) => Some((a.0.min(b.0), a.1.max(b.1))),
+            (a, b) => a.or(b),
+        };
+        keys.or_else(|| self.particles.as_ref().map(|p| (0.0, 4.0 * p.lifetime)))
     }
 
     /// Show the instant `time` (seconds): each animated object's local

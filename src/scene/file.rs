@@ -110,6 +110,8 @@ pub(super) struct RenderFile {
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
     pub(super) msaa: u32,
+    pub(super) skinning_on: super::settings::SkinningOn,
+    pub(super) joint_storage: super::settings::JointStorage,
 }
 
 impl Default for RenderFile {
@@ -139,6 +141,8 @@ impl Default for RenderFile {
             sort_opaque: true,
             post_chain: super::settings::ChainForm::PingPong,
             msaa: 1,
+            skinning_on: super::settings::SkinningOn::Gpu,
+            joint_storage: super::settings::JointStorage::Auto,
         }
     }
 }
@@ -264,6 +268,11 @@ pub(super) struct ObjectFile {
     pub(super) parent: Option<String>,
     /// This object is a planar mirror (src/scene/mirrors.rs).
     pub(super) mirror: Option<MirrorFile>,
+    /// A skinned glTF mesh: how its vertices follow the joints.
+    pub(super) skinning: Option<super::settings::SkinMethod>,
+    /// A skinned glTF mesh: the animation that poses it (default: the
+    /// file's first; "none": the rest pose).
+    pub(super) clip: Option<String>,
 }
 
 fn unit_scale() -> [f32; 3] {

@@ -9,7 +9,9 @@ use super::RenderSettings;
 use super::settings::{BillboardMode, ChainForm, DepthFunc, MirrorOrder, RenderPath, Shading};
 use glam::Vec3;
 
+mod animation;
 mod lighting;
+pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, STENCIL_VOLUMES,
     TILE_SIZE,
@@ -304,6 +306,8 @@ pub static ALL: &[&Knob] = &[
     &SORT_OPAQUE,
     &POST_CHAIN,
     &MSAA,
+    &SKINNING_ON,
+    &JOINT_STORAGE,
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

@@ -18,5 +18,8 @@ pub fn mesh_data(source: &MeshSource) -> Result<MeshData> {
         MeshSource::Cone => geometry::cone(48),
         MeshSource::Torus => geometry::torus(1.0, 0.35, 64, 24),
         MeshSource::Obj(path) => geometry::load_obj(path)?,
+        // The skin in its bind pose: the draw list poses it (each object
+        // its own way), from `Object::skin`.
+        MeshSource::Gltf(path) => geometry::load_gltf(path)?.0.mesh,
     })
 }

@@ -31,6 +31,7 @@ mod resolve;
 mod save;
 mod settings;
 pub mod shadows;
+pub mod skins;
 pub mod tessellation;
 mod text;
 mod views;
@@ -43,7 +44,8 @@ pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
 pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, Cull, DeferredLights, DepthFunc,
-    Falloff, MirrorOrder, RenderPath, RenderSettings, Shading,
+    Falloff, JointStorage, MirrorOrder, RenderPath, RenderSettings, Shading, SkinMethod,
+    SkinningOn,
 };
 pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;
@@ -162,6 +164,8 @@ pub enum MeshSource {
     Cone,
     Torus,
     Obj(PathBuf),
+    /// A skinned mesh in a glTF 2.0 file (src/scene/skins.rs).
+    Gltf(PathBuf),
 }
 
 impl MeshSource {
@@ -187,6 +191,8 @@ pub struct Object {
     /// A rotation that replaces `rotation`'s angles: an animation track's
     /// (src/scene/animation.rs). None: the file's angles.
     pub orientation: Option<glam::Quat>,
+    /// A skinned mesh's skin, skeleton, clip and method (mesh = a glTF file).
+    pub skin: Option<skins::ObjectSkin>,
 }
 
 impl Object {

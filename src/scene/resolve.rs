@@ -185,6 +185,7 @@ fn objects(
 ) -> Result<Vec<Object>> {
     let mut locals = Vec::new();
     let mut object_names: HashMap<String, usize> = HashMap::new();
+    let mut skins = super::skins::Loaded::default();
     for (i, o) in f.objects.iter().enumerate() {
         let key = |k: &str| format!("objects[{i}].{k}");
         finite(&key("position"), &o.position)?;
@@ -207,8 +208,15 @@ fn objects(
                 }
                 MeshSource::Obj(p)
             }
+            file if assets::has_extension(file, "glb") || assets::has_extension(file, "gltf") => {
+                let p = relative_to(base, file);
+                if let Some(why) = assets::not_a_file(&p) {
+                    bail!("{}: file {} {why}", key("mesh"), p.display());
+                }
+                MeshSource::Gltf(p)
+            }
             other => bail!(
-                "{}: expected one of {} or a path to an .obj file, found \"{other}\"",
+                "{}: expected one of {} or a path to an .obj, .glb or .gltf file, found \"{other}\"",
                 key("mesh"),
                 MeshSource::BUILTIN
             ),
@@ -231,7 +239,8 @@ fn objects(
             .as_ref()
             .map(|m| super::mirrors::mirror(&key("mirror"), m, &mesh, base))
             .transpose()?;
-        locals.push((name, mesh, material, mirror));
+        let skin = super::skins::object_skin(i, o, &mesh, &mut skins)?;
+        locals.push((name, mesh, material, mirror, skin));
     }
     let mut objects = Vec::new();
     for (i, o) in f.objects.iter().enumerate() {
@@ -263,6 +272,7 @@ fn objects(
             model: glam::Mat4::IDENTITY,
             mirror: locals[i].3.clone(),
             orientation: None,
+            skin: locals[i].4.clone(),
         });
     }
     super::update_models(&mut objects);

@@ -88,7 +88,7 @@ impl Scene {
                     t.insert("rotation".into(), vec3(o.rotation));
                     t.insert("scale".into(), vec3(o.scale));
                     let mesh = match &o.mesh {
-                        MeshSource::Obj(p) => path(p),
+                        MeshSource::Obj(p) | MeshSource::Gltf(p) => path(p),
                         builtin => format!("{builtin:?}").to_lowercase().into(),
                     };
                     t.insert("mesh".into(), mesh);

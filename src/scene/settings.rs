@@ -213,6 +213,43 @@ setting! {
 }
 
 setting! {
+    /// How a skinned mesh's vertices follow its joints (notes 01 §7.1).
+    pub enum SkinMethod {
+        /// The notes' formula: the weighted sum of each joint's matrix times
+        /// the vertex.
+        Linear = "linear",
+        /// The joints as unit dual quaternions, blended and normalised
+        /// (Kavan et al. 2007): a twisted joint keeps its girth.
+        DualQuaternion = "dual_quaternion",
+    }
+}
+
+setting! {
+    /// Where skinned meshes are skinned.
+    pub enum SkinningOn {
+        /// The skinning pass: a vertex shader with transform feedback.
+        Gpu = "gpu",
+        /// The CPU reference: each frame's pose skinned on the CPU and
+        /// uploaded as a static mesh.
+        Cpu = "cpu",
+    }
+}
+
+setting! {
+    /// Where the skinning pass reads the joint matrices from.
+    pub enum JointStorage {
+        /// A uniform array while the skeleton fits (GL_MAX_VERTEX_UNIFORM_COMPONENTS),
+        /// a buffer texture beyond.
+        Auto = "auto",
+        /// The uniform array (a skeleton that does not fit still reads the
+        /// texture, and the pass says so).
+        Uniforms = "uniforms",
+        /// Always the buffer texture (a texelFetch per column).
+        Texture = "texture",
+    }
+}
+
+setting! {
     /// How the full-screen deferred path loops over the lights.
     pub enum DeferredLights {
         /// One full-screen pass per light, added by blending (notes 04,
@@ -330,4 +367,8 @@ pub struct RenderSettings {
     /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4
     /// or 8 (src/techniques/fragment_tests/msaa.rs); 1 is no MSAA.
     pub msaa: u32,
+    /// Where skinned meshes are skinned: the GPU pass, or the CPU reference.
+    pub skinning_on: SkinningOn,
+    /// Where the skinning pass reads the joint matrices from.
+    pub joint_storage: JointStorage,
 }

@@ -23,6 +23,14 @@ impl Scene {
         self.light_warnings(&mut w);
         self.material_warnings(&mut w);
         self.camera_warnings(&mut w);
+        // What loading each skinned mesh's file said, once per file.
+        let mut seen = Vec::new();
+        for s in self.objects.iter().filter_map(|o| o.skin.as_ref()) {
+            if !seen.iter().any(|p| std::ptr::eq(*p, s.warnings.as_ref())) {
+                seen.push(s.warnings.as_ref());
+                w.extend(s.warnings.iter().cloned());
+            }
+        }
         w
     }
 

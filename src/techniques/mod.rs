@@ -9,6 +9,7 @@
 //! of its own chapter; never the renderer or another chapter's technique
 //! (tests/architecture.rs checks it).
 
+pub mod animation;
 pub mod billboards;
 pub mod blending;
 pub mod deferred;
@@ -26,6 +27,8 @@ use crate::scene::Scene;
 
 /// The registry, in frame order.
 pub static ALL: &[&Technique] = &[
+    // First: every later pass draws the skinned meshes it poses.
+    &animation::skinned_meshes::SKINNED_MESHES,
     &shadows::shadow_map::SHADOW_MAP,
     &lighting::forward::FORWARD,
     &vertex_geometry::tessellation::TESSELLATION,

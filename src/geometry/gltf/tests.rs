@@ -71,10 +71,10 @@ fn the_rest_pose_is_the_bind_pose_and_a_clip_moves_the_hand_where_the_angles_say
     for m in a.joint_matrices(None, 0.0) {
         assert!(m.abs_diff_eq(Mat4::IDENTITY, 1e-6), "{m}");
     }
-    // "wave" at 1 s: shoulder 30°, elbow 90°, wrist 40° about z, joints at
+    // "wave" at 2 s: shoulder 30°, elbow 90°, wrist 40° about z, joints at
     // x = 0, 1, 2. The hand's tip, x = 3 in the bind pose, goes to
     // R(30)(1, 0) + R(120)(1, 0) + R(160)(1, 0).
-    let j = a.joint_matrices(a.clip("wave"), 1.0);
+    let j = a.joint_matrices(a.clip("wave"), 2.0);
     let dir = |deg: f32| Vec3::new(deg.to_radians().cos(), deg.to_radians().sin(), 0.0);
     let tip = dir(30.0) + dir(120.0) + dir(160.0);
     let got = j[2].transform_point3(Vec3::new(3.0, 0.0, 0.0));

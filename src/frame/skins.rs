@@ -59,7 +59,12 @@ impl SkinDraw {
             SkinMethod::DualQuaternion => (self.joints.iter())
                 .map(|m| {
                     let d = DualQuat::from_mat4(m);
-                    Mat4::from_cols(Vec4::from(d.real), Vec4::from(d.dual), Vec4::ZERO, Vec4::ZERO)
+                    Mat4::from_cols(
+                        Vec4::from(d.real),
+                        Vec4::from(d.dual),
+                        Vec4::ZERO,
+                        Vec4::ZERO,
+                    )
                 })
                 .collect(),
         }

@@ -214,6 +214,11 @@ impl Renderer {
         &self.shadows
     }
 
+    /// The scene's objects on the GPU (the tests read the skinned vertices back).
+    pub fn draws(&self) -> &DrawList {
+        &self.draws
+    }
+
     /// The full-screen triangle and the volume meshes.
     pub fn meshes(&self) -> &FrameMeshes {
         &self.meshes

@@ -38,7 +38,9 @@ pub struct ObjectSkin {
 
 impl PartialEq for ObjectSkin {
     fn eq(&self, other: &ObjectSkin) -> bool {
-        Arc::ptr_eq(&self.mesh, &other.mesh) && self.method == other.method && self.clip == other.clip
+        Arc::ptr_eq(&self.mesh, &other.mesh)
+            && self.method == other.method
+            && self.clip == other.clip
     }
 }
 
@@ -50,7 +52,8 @@ impl ObjectSkin {
 
     /// The clip's name, or "rest pose".
     pub fn clip_name(&self) -> &str {
-        self.clip.map_or("rest pose", |c| self.mesh.clips[c].name.as_str())
+        self.clip
+            .map_or("rest pose", |c| self.mesh.clips[c].name.as_str())
     }
 }
 
@@ -90,11 +93,19 @@ pub(super) fn object_skin(
         Some(name) => match skinned.clip(name) {
             Some(c) => Some(c),
             None => {
-                let names: Vec<String> = skinned.clips.iter().map(|c| format!("\"{}\"", c.name)).collect();
+                let names: Vec<String> = skinned
+                    .clips
+                    .iter()
+                    .map(|c| format!("\"{}\"", c.name))
+                    .collect();
                 bail!(
                     "objects[{i}].clip: {} has no animation named \"{name}\"; it has {} (or \"none\": the rest pose)",
                     path.display(),
-                    if names.is_empty() { "none".to_owned() } else { names.join(", ") }
+                    if names.is_empty() {
+                        "none".to_owned()
+                    } else {
+                        names.join(", ")
+                    }
                 );
             }
         },

@@ -109,11 +109,16 @@ pub fn gl_state(gl: &glow::Context) -> Vec<(String, i64)> {
             ("FRAMEBUFFER_SRGB", glow::FRAMEBUFFER_SRGB),
             ("POLYGON_OFFSET_FILL", glow::POLYGON_OFFSET_FILL),
             ("CLIP_DISTANCE0", glow::CLIP_DISTANCE0),
+            ("RASTERIZER_DISCARD", glow::RASTERIZER_DISCARD),
         ] {
             v.push((name.to_string(), gl.is_enabled(cap) as i64));
         }
         for (name, p) in [
             ("DEPTH_FUNC", glow::DEPTH_FUNC),
+            (
+                "TRANSFORM_FEEDBACK_BUFFER_BINDING",
+                glow::TRANSFORM_FEEDBACK_BUFFER_BINDING,
+            ),
             ("CULL_FACE_MODE", glow::CULL_FACE_MODE),
             ("FRONT_FACE", glow::FRONT_FACE),
             ("BLEND_SRC_RGB", glow::BLEND_SRC_RGB),

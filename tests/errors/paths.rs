@@ -211,6 +211,10 @@ fn extensions_are_read_in_any_case() {
     let msg = format!("{:#}", Scene::load(&path).unwrap_err());
     contains_all(
         &msg,
-        &["objects[0].mesh", "a path to an .obj file", "quad.stl"],
+        &[
+            "objects[0].mesh",
+            "a path to an .obj, .glb or .gltf file",
+            "quad.stl",
+        ],
     );
 }

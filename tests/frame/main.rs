@@ -10,5 +10,6 @@ mod face_culling;
 mod particles;
 mod passes;
 mod plan;
+mod skinning;
 mod tessellation;
 mod timing;

@@ -147,13 +147,21 @@ impl RunPasses for SkinnedMeshes {
         let gl = f.gl;
         let storage = f.scene.render.joint_storage;
         if !self.reported.replace(true) {
-            let most = f.draws.skins.iter().map(|s| s.joints.len()).max().unwrap_or(0);
+            let most = f
+                .draws
+                .skins
+                .iter()
+                .map(|s| s.joints.len())
+                .max()
+                .unwrap_or(0);
             eprintln!(
                 "skinning: up to {most} joints a mesh; this GL holds {} joint matrices in a uniform array (GL_MAX_VERTEX_UNIFORM_COMPONENTS), more go in a buffer texture",
                 self.max_uniform_joints
             );
             if storage == JointStorage::Uniforms && most > self.max_uniform_joints {
-                eprintln!("skinning: render.joint_storage = \"uniforms\", but {most} joints do not fit: those meshes read a buffer texture");
+                eprintln!(
+                    "skinning: render.joint_storage = \"uniforms\", but {most} joints do not fit: those meshes read a buffer texture"
+                );
             }
         }
         unsafe {
@@ -180,7 +188,11 @@ impl RunPasses for SkinnedMeshes {
                     program.set_mat4_array("u_joints", &joints);
                 }
                 let mesh = &f.draws.meshes[f.draws.items[s.item].mesh];
-                gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, Some(mesh.vertex_buffer()));
+                gl.bind_buffer_base(
+                    glow::TRANSFORM_FEEDBACK_BUFFER,
+                    0,
+                    Some(mesh.vertex_buffer()),
+                );
                 gl.begin_transform_feedback(glow::POINTS);
                 gl.bind_vertex_array(Some(s.vertices.vao));
                 gl.draw_arrays(glow::POINTS, 0, s.vertices.count);

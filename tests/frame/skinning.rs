@@ -1,0 +1,210 @@
+//! Notes 01 §7.1, skinned meshes (src/techniques/animation/skinned_meshes.rs):
+//! the GPU's skinned vertices are the CPU reference's, for linear blending
+//! and dual quaternions; the image is the CPU reference's on the forward
+//! and deferred paths, shadows included; the uniform array and the buffer
+//! texture give the same image; the plan skins only when it must; and a
+//! scene's skinning keys are checked.
+
+use crate::common;
+use gloss::image_compare::{Tolerance, compare_rgba8};
+use gloss::renderer::{Output, render_scene};
+use gloss::scene::{JointStorage, RenderPath, Scene, SkinMethod, SkinningOn};
+use gloss::techniques::animation::skinned_meshes::uniform_joint_limit;
+use glow::HasContext;
+use std::path::Path;
+
+fn scene(f: impl FnOnce(&mut Scene)) -> Scene {
+    let mut s = common::scene("skinned-arm.toml");
+    s.render.size = (320, 180);
+    f(&mut s);
+    s
+}
+
+#[test]
+fn the_gpu_skins_every_vertex_as_the_cpu_reference_does() {
+    let ctx = common::context(common::backend());
+    let s = scene(|_| {});
+    let r = render_scene(&ctx, &s, Output::Srgb8).expect("renders");
+    let draws = r.draws();
+    assert_eq!(draws.skins.len(), 3);
+    let mut methods = Vec::new();
+    for sd in &draws.skins {
+        let mesh = &draws.meshes[draws.items[sd.item].mesh];
+        let mut bytes = vec![0u8; mesh.vertex_count as usize * 32];
+        unsafe {
+            ctx.gl
+                .bind_buffer(glow::ARRAY_BUFFER, Some(mesh.vertex_buffer()));
+            ctx.gl
+                .get_buffer_sub_data(glow::ARRAY_BUFFER, 0, &mut bytes);
+            ctx.gl.bind_buffer(glow::ARRAY_BUFFER, None);
+        }
+        let gpu: Vec<f32> = (bytes.chunks(4))
+            .map(|b| f32::from_le_bytes(b.try_into().unwrap()))
+            .collect();
+        let dual = sd.skin.method == SkinMethod::DualQuaternion;
+        let cpu = sd.skin.mesh.skinned(&sd.joints, dual);
+        let (mut dp, mut dn) = (0f32, 0f32);
+        for (i, v) in cpu.vertices.iter().enumerate() {
+            let g = &gpu[8 * i..8 * i + 8];
+            for k in 0..3 {
+                dp = dp.max((g[k] - v.position[k]).abs());
+                dn = dn.max((g[3 + k] - v.normal[k]).abs());
+            }
+            assert_eq!([g[6], g[7]], v.uv, "vertex {i}: the uv passes through");
+        }
+        // f32 sums in a different order: a few ulps of positions about 3 long.
+        assert!(
+            dp < 2e-5 && dn < 2e-5,
+            "{:?}: position {dp}, normal {dn}",
+            sd.skin.method
+        );
+        methods.push(sd.skin.method);
+        // The pose is not the rest pose: skinning moved something.
+        let moved = (cpu.vertices.iter().zip(&sd.skin.mesh.mesh.vertices)).any(|(a, b)| {
+            (glam::Vec3::from(a.position) - glam::Vec3::from(b.position)).length() > 0.1
+        });
+        assert!(moved, "the clip moves the skin");
+    }
+    assert!(methods.contains(&SkinMethod::Linear) && methods.contains(&SkinMethod::DualQuaternion));
+    ctx.debug
+        .check(&ctx.gl, "reading the skinned vertices back")
+        .unwrap();
+}
+
+/// At most a pixel in 500 one 8-bit step apart (positions differ in their
+/// last bits, so an edge may cover a pixel centre on one side only), and
+/// no channel more than 2 steps apart anywhere but there.
+const SAME: Tolerance = Tolerance {
+    threshold: 1.0 / 255.0,
+    max_frac_over: 0.002,
+    max_abs: None,
+};
+
+#[test]
+fn gpu_skinning_draws_the_cpu_references_image_forward_deferred_and_in_shadow() {
+    for path in [RenderPath::Forward, RenderPath::Deferred] {
+        let gpu = common::render(&scene(|s| s.render.path = path), Output::Srgb8).image;
+        let cpu = common::render(
+            &scene(|s| {
+                s.render.path = path;
+                s.render.skinning_on = SkinningOn::Cpu;
+            }),
+            Output::Srgb8,
+        )
+        .image;
+        let m = common::assert_close(&format!("skinning-gpu-vs-cpu-{path:?}"), &gpu, &cpu, &SAME);
+        eprintln!("{path:?}: GPU vs CPU skinning: {m}");
+    }
+    // The pose shows, shadows included: the rest pose's image differs.
+    let posed = common::render(&scene(|_| {}), Output::Srgb8).image;
+    let rest = common::render(&scene(|s| s.set_time(0.0).unwrap()), Output::Srgb8).image;
+    let d = compare_rgba8(&posed, &rest, 8.0 / 255.0).unwrap();
+    assert!(d.frac_over > 0.01, "posed vs rest: {d}");
+}
+
+#[test]
+fn the_uniform_array_and_the_buffer_texture_give_the_same_image() {
+    let uniforms = common::render(
+        &scene(|s| s.render.joint_storage = JointStorage::Uniforms),
+        Output::Srgb8,
+    )
+    .image;
+    let texture = common::render(
+        &scene(|s| s.render.joint_storage = JointStorage::Texture),
+        Output::Srgb8,
+    )
+    .image;
+    assert!(uniforms == texture, "the same matrices, read two ways");
+    // GL 3.3's minimum of 1024 vertex uniform components holds 60 joints.
+    assert_eq!(uniform_joint_limit(1024), 60);
+    assert_eq!(uniform_joint_limit(16384), 1020);
+}
+
+#[test]
+fn linear_blending_collapses_the_twisted_elbow_and_dual_quaternions_keep_it() {
+    let s = scene(|_| {});
+    let arm = |method: SkinMethod| {
+        let o = (s.objects.iter())
+            .find(|o| o.skin.as_ref().is_some_and(|k| k.method == method))
+            .unwrap();
+        o.skin.clone().unwrap()
+    };
+    // The ring nearest the elbow (x = 0.975 in the bind pose; the elbow is
+    // at x = 1), its weights w0 on the upper arm and w1 on the forearm.
+    let skin = arm(SkinMethod::Linear);
+    let ring: Vec<usize> = (0..skin.mesh.mesh.vertices.len())
+        .filter(|&i| (skin.mesh.mesh.vertices[i].position[0] - 0.975).abs() < 1e-4)
+        .collect();
+    assert_eq!(ring.len(), 21);
+    let w = skin.mesh.weights[ring[0]];
+    let girth = |method: SkinMethod| {
+        let skin = arm(method);
+        let dual = method == SkinMethod::DualQuaternion;
+        let posed = skin.mesh.skinned(&skin.joint_matrices(2.0), dual);
+        (ring.iter())
+            .map(|&i| {
+                glam::Vec2::new(posed.vertices[i].position[1], posed.vertices[i].position[2])
+                    .length()
+            })
+            .fold(0f32, f32::max)
+    };
+    // 180° of twist about the bone: the linear blend takes each point to
+    // w0 p + w1 (-p) (the twist negates y and z), radius 0.18 |w0 - w1|,
+    // almost nothing; dual quaternions turn the ring part way round and it
+    // keeps its radius, 0.18.
+    let lbs = girth(SkinMethod::Linear);
+    assert!(
+        (lbs - 0.18 * (w[0] - w[1]).abs()).abs() < 1e-5,
+        "{lbs} {w:?}"
+    );
+    assert!(lbs < 0.03, "{lbs}");
+    let dq = girth(SkinMethod::DualQuaternion);
+    assert!((dq - 0.18).abs() < 1e-4, "{dq}");
+}
+
+#[test]
+fn the_plan_skins_on_the_gpu_only_when_a_scene_has_a_skin() {
+    let plan = gloss::techniques::plan(&scene(|_| {}));
+    let names: Vec<&str> = plan.passes.iter().map(|p| p.name).collect();
+    assert_eq!(names[..2], ["skinning", "shadow map"], "{names:?}");
+    let cpu = gloss::techniques::plan(&scene(|s| s.render.skinning_on = SkinningOn::Cpu));
+    assert!(cpu.passes.iter().all(|p| p.name != "skinning"));
+    let none = gloss::techniques::plan(&common::scene("default.toml"));
+    assert!(none.passes.iter().all(|p| p.name != "skinning"));
+    // The clips' span is the scene's playable span: "wave" lasts 4 s.
+    assert_eq!(scene(|_| {}).playable_span(), Some((0.0, 4.0)));
+}
+
+fn load(objects: &str) -> String {
+    let text = format!(
+        "name = \"t\"\n[camera]\neye = [0.0, 1.0, 5.0]\ntarget = [0.0, 0.0, 0.0]\n{objects}"
+    );
+    let path = common::root().join("scenes/t.toml");
+    match Scene::parse(&text, Path::new(&path)) {
+        Ok(_) => panic!("accepted: {objects}"),
+        Err(e) => format!("{e:#}"),
+    }
+}
+
+#[test]
+fn the_skinning_keys_are_checked() {
+    let e = load("[[objects]]\nmesh = \"cube\"\nskinning = \"linear\"\n");
+    assert!(
+        e.contains("objects[0]: `skinning` and `clip` are for a skinned mesh"),
+        "{e}"
+    );
+    let e = load("[[objects]]\nmesh = \"assets/arm.glb\"\nclip = \"dance\"\n");
+    assert!(
+        e.contains("no animation named \"dance\"; it has \"wave\", \"twist\""),
+        "{e}"
+    );
+    let e = load("[[objects]]\nmesh = \"assets/arm.glb\"\nskinning = \"quadratic\"\n");
+    assert!(
+        e.contains("quadratic") && e.contains("dual_quaternion"),
+        "{e}"
+    );
+    let e = load("[[objects]]\nmesh = \"assets/missing.glb\"\n");
+    assert!(e.contains("missing.glb"), "{e}");
+    let e = load("[[objects]]\nmesh = \"assets/checker.png\"\n");
+    assert!(e.contains(".obj, .glb or .gltf"), "{e}");
+}

@@ -161,6 +161,11 @@ impl Demo {
                 scene.tessellation = Some(t);
                 self.set_values(scene)
             }
+            Action::Skin(object, skin) => {
+                let mut scene = self.scene.clone();
+                scene.objects[object].skin = Some(skin);
+                self.set_values(scene)
+            }
             Action::Time(t) => {
                 let mut scene = self.scene.clone();
                 scene.set_time(t).and_then(|()| self.set_values(scene))

@@ -92,6 +92,11 @@ impl Scene {
                         builtin => format!("{builtin:?}").to_lowercase().into(),
                     };
                     t.insert("mesh".into(), mesh);
+                    if let Some(s) = &o.skin {
+                        t.insert("skinning".into(), s.method.name().into());
+                        let clip = s.clip.map_or("none", |c| s.mesh.clips[c].name.as_str());
+                        t.insert("clip".into(), clip.into());
+                    }
                     match o.material {
                         0 => t.remove("material"),
                         i => t.insert("material".into(), self.materials[i].name.clone().into()),

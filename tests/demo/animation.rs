@@ -85,3 +85,44 @@ fn the_geometry_section_edits_the_particles_and_the_terrain() {
     let rs = Renderer::new(&ctx.gl, &ctx.debug, &still, &Sources::Embedded, 64, 36).unwrap();
     assert!(d.find(&input(&still, &rs), "wireframe").is_none());
 }
+
+#[test]
+fn each_skinned_object_gets_its_method_and_clip() {
+    let ctx = common::context(common::backend());
+    let mut arm = common::scene("skinned-arm.toml");
+    arm.render.size = (64, 36);
+    // One skinned object, so that its combo boxes are the only ones.
+    arm.objects
+        .retain(|o| o.name == "floor" || o.name == "linear");
+    let r = Renderer::new(&ctx.gl, &ctx.debug, &arm, &Sources::Embedded, 64, 36).unwrap();
+    let mut d = Driver::new();
+    // Only "twist" is left: the span is its 2 s.
+    assert_eq!(arm.playable_span(), Some((0.0, 2.0)));
+    assert!(
+        d.click(&input(&arm, &r), "linear").is_empty(),
+        "opens the list"
+    );
+    let actions = d.click(&input(&arm, &r), "dual_quaternion");
+    let [Action::Skin(i, skin)] = actions.as_slice() else {
+        panic!("{} actions", actions.len())
+    };
+    assert_eq!(arm.objects[*i].name, "linear");
+    assert_eq!(skin.method, gloss::scene::SkinMethod::DualQuaternion);
+    assert_eq!(skin.clip_name(), "twist");
+    // The demo's answer: the renderer poses the object the new way.
+    let mut edited = arm.clone();
+    edited.objects[*i].skin = Some(skin.clone());
+    let mut r = r;
+    r.set_scene_values(&edited).unwrap();
+    r.render(&edited.camera).unwrap();
+    let mut fresh = arm.clone();
+    fresh.objects[*i].skin.as_mut().unwrap().method = gloss::scene::SkinMethod::DualQuaternion;
+    assert!(r.read_image() == common::render_with(&ctx, &fresh, Output::Srgb8).image);
+    // The clip list: the rest pose and the file's clips.
+    assert!(d.click(&input(&arm, &r), "twist").is_empty());
+    let actions = d.click(&input(&arm, &r), "rest pose");
+    let [Action::Skin(_, skin)] = actions.as_slice() else {
+        panic!("{} actions", actions.len())
+    };
+    assert_eq!(skin.clip, None);
+}

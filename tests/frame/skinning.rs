@@ -208,3 +208,38 @@ fn the_skinning_keys_are_checked() {
     let e = load("[[objects]]\nmesh = \"assets/checker.png\"\n");
     assert!(e.contains(".obj, .glb or .gltf"), "{e}");
 }
+
+#[test]
+fn a_files_weight_warnings_reach_the_scene_and_its_errors_name_the_file() {
+    let dir = std::env::temp_dir().join(format!("gloss-skin-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let arm = common::root().join("scenes/assets/arm.glb");
+    let (mut skin, _) = gloss::geometry::load_gltf(&arm).unwrap();
+    skin.weights[5] = [0.3, 0.3, 0.0, 0.0];
+    std::fs::write(dir.join("loose.glb"), gloss::geometry::write_glb(&skin)).unwrap();
+    skin.weights[6] = [0.0; 4];
+    std::fs::write(dir.join("zero.glb"), gloss::geometry::write_glb(&skin)).unwrap();
+    let text = |mesh: &str| {
+        format!(
+            "name = \"t\"\n[camera]\neye = [0.0, 1.0, 5.0]\ntarget = [0.0, 0.0, 0.0]\n[[objects]]\nmesh = \"{mesh}\"\n[[objects]]\nmesh = \"{mesh}\"\n"
+        )
+    };
+    let path = dir.join("t.toml");
+    let s = Scene::parse(&text("loose.glb"), &path).unwrap();
+    let w: Vec<String> = s
+        .warnings()
+        .into_iter()
+        .filter(|w| w.contains("loose.glb"))
+        .collect();
+    assert_eq!(w.len(), 1, "once for the file, not per object: {w:?}");
+    assert!(
+        w[0].contains("vertex 5: 0.6") && w[0].contains("scaled so that they do"),
+        "{w:?}"
+    );
+    let e = format!("{:#}", Scene::parse(&text("zero.glb"), &path).unwrap_err());
+    assert!(
+        e.contains("zero.glb") && e.contains("vertex 6") && e.contains("every weight is 0"),
+        "{e}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

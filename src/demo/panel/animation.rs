@@ -2,7 +2,8 @@
 //! shown when the scene has keyframe tracks or particles: play or pause, scrub the time
 //! over the keys' span, and the playing speed. Scrubbing asks for
 //! `Action::Time`; while playing, the demo advances the time each frame
-//! (`advance`).
+//! (`advance`). Each skinned object (notes 01 §7.1) gets its skinning
+//! method and clip.
 
 use super::{Action, PanelInput, PanelState};
 
@@ -39,7 +40,43 @@ impl PanelState {
                     actions.push(Action::Time(t));
                 }
                 ui.add(egui::Slider::new(&mut self.speed, 0.0..=4.0).text("speed"));
+                for i in input.scene.skinned_objects() {
+                    skin_controls(ui, i, input.scene, actions);
+                }
             });
+    }
+}
+
+/// Object `i`'s skinning method and clip.
+fn skin_controls(
+    ui: &mut egui::Ui,
+    i: usize,
+    scene: &crate::scene::Scene,
+    actions: &mut Vec<Action>,
+) {
+    use crate::scene::SkinMethod;
+    let mut skin = scene.objects[i].skin.clone().unwrap();
+    let before = (skin.method, skin.clip);
+    ui.horizontal(|ui| {
+        ui.label(&scene.objects[i].name);
+        egui::ComboBox::from_id_salt(("skinning", i))
+            .selected_text(skin.method.name())
+            .show_ui(ui, |ui| {
+                for &m in SkinMethod::ALL {
+                    ui.selectable_value(&mut skin.method, m, m.name());
+                }
+            });
+        egui::ComboBox::from_id_salt(("clip", i))
+            .selected_text(skin.clip_name().to_owned())
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut skin.clip, None, "rest pose");
+                for (c, clip) in skin.mesh.clips.iter().enumerate() {
+                    ui.selectable_value(&mut skin.clip, Some(c), clip.name.as_str());
+                }
+            });
+    });
+    if (skin.method, skin.clip) != before {
+        actions.push(Action::Skin(i, skin));
     }
 }
 

@@ -74,6 +74,8 @@ pub enum Action {
     Particles(crate::scene::particles::Particles),
     /// The tessellated terrain, edited.
     Tessellation(crate::scene::tessellation::Tessellation),
+    /// A skinned object's method and clip (notes 01 §7.1), edited.
+    Skin(usize, crate::scene::skins::ObjectSkin),
 }
 
 /// What the panel shows.

@@ -68,6 +68,12 @@ pub struct BenchArgs {
     /// (src/bench/particles.rs); default scene scenes/particles.toml.
     #[arg(long, value_delimiter = ',', conflicts_with_all = ["vary", "aa", "scaling"])]
     pub particles: Vec<usize>,
+    /// Measure skinned meshes instead, at about these many skinned
+    /// vertices: the GPU's skinning pass against the CPU reference, linear
+    /// blend and dual quaternions (src/bench/skinning.rs); default scene
+    /// scenes/skinned-arm.toml.
+    #[arg(long, value_delimiter = ',', conflicts_with_all = ["vary", "aa", "scaling", "particles"])]
+    pub skinning: Vec<usize>,
     /// Where the CSV and the plot go.
     #[arg(long, default_value = "target/bench")]
     pub out: PathBuf,

@@ -18,7 +18,8 @@
 //! (error against frame time), `floor` (each pass against the fill-rate
 //! floor), `bound` (the far field's error bound), `pareto` (settings no
 //! other beats), `overdraw` (fragments a pixel), `particles` (the geometry
-//! shader's points against quads built on the CPU).
+//! shader's points against quads built on the CPU), `skinning` (the GPU's
+//! skinning pass against the CPU reference).
 
 pub mod aa;
 mod args;
@@ -33,6 +34,7 @@ mod plot;
 mod post;
 mod scaling;
 pub mod shadows;
+mod skinning;
 mod stats;
 mod table;
 mod variants;
@@ -86,12 +88,11 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     if args.frames == 0 {
         bail!("--frames must be at least 1");
     }
-    let default = if args.aa {
-        "scenes/antialiasing.toml"
-    } else if !args.particles.is_empty() {
-        "scenes/particles.toml"
-    } else {
-        "scenes/many-lights.toml"
+    let default = match () {
+        _ if args.aa => "scenes/antialiasing.toml",
+        _ if !args.particles.is_empty() => "scenes/particles.toml",
+        _ if !args.skinning.is_empty() => "scenes/skinned-arm.toml",
+        _ => "scenes/many-lights.toml",
     };
     let scene_path = (args.scene.clone()).unwrap_or_else(|| PathBuf::from(default));
     let scene_path = crate::assets::scene_path(&scene_path);
@@ -100,17 +101,14 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     base.print_warnings(&base.warnings_on_every_path());
     let ctx = Headless::new(backend, false)?;
     let software = ctx.info.renderer.contains("llvmpipe") || ctx.info.renderer.contains("softpipe");
-    if args.aa {
-        return aa::run(args, &scene_path, &ctx);
-    }
-    if args.scaling {
-        return scaling::run(args, &base, &ctx, software);
-    }
-    if !args.particles.is_empty() {
-        return particles::run(args, &base, &ctx);
-    }
-    if !args.vary.is_empty() {
-        return variants::run(args, &scene_path, &ctx, software);
+    // The other measurements, each in its own file.
+    match () {
+        _ if args.aa => return aa::run(args, &scene_path, &ctx),
+        _ if args.scaling => return scaling::run(args, &base, &ctx, software),
+        _ if !args.particles.is_empty() => return particles::run(args, &base, &ctx),
+        _ if !args.skinning.is_empty() => return skinning::run(args, &base, &ctx),
+        _ if !args.vary.is_empty() => return variants::run(args, &scene_path, &ctx, software),
+        _ => {}
     }
     let (w, h) = args.size.unwrap_or(base.render.size);
     let light_counts = if args.lights.is_empty() {

@@ -243,3 +243,42 @@ fn a_files_weight_warnings_reach_the_scene_and_its_errors_name_the_file() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn bench_measures_skinning_on_the_gpu_against_the_cpu() {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([
+            "bench",
+            "--skinning",
+            "900",
+            "--frames",
+            "1",
+            "--warmup",
+            "0",
+        ])
+        .args(["--size", "96x54"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // One arm of 903 vertices, each way: the GPU gets 3 joint matrices (192
+    // bytes), the CPU sends 32 bytes a vertex.
+    let rows: Vec<&str> = (stdout.lines())
+        .filter(|l| l.trim_start().starts_with("903 ") && !l.contains("vertices,"))
+        .collect();
+    assert_eq!(rows.len(), 4, "{stdout}");
+    assert!(
+        rows[0].contains(" gpu ") && rows[0].contains(" 192 "),
+        "{stdout}"
+    );
+    assert!(
+        rows[1].contains(" cpu ") && rows[1].contains(" 28896 "),
+        "{stdout}"
+    );
+    // The GPU's vertices are the CPU reference's.
+    for r in &rows {
+        let error: f32 = r.split_whitespace().last().unwrap().parse().unwrap();
+        assert!(error < 1e-5, "{r}");
+    }
+}

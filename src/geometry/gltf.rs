@@ -34,13 +34,41 @@ pub const MAX_GLTF_VERTICES: usize = 16_000_000;
 pub fn load_gltf(path: &Path) -> Result<(SkinnedMesh, Vec<String>)> {
     let name = path.display().to_string();
     let bytes = assets::read(path, MAX_GLTF_BYTES, "glTF file")?;
-    // The gltf crate checks slices as it reads; this catches anything it
-    // did not, so that a hostile file is an error and never a crash.
-    let result = std::panic::catch_unwind(|| read(&bytes, path, &name));
-    match result {
+    read_guarded(&bytes, path, &name)
+}
+
+/// `read`, with any panic inside the gltf crate turned into an error. The
+/// crate checks most of a file, but some malformed files (a mesh with an
+/// attribute name it cannot parse, found by the corruption test) make it
+/// unwrap what it did not check. So a hostile file is an error, never a
+/// crash, and the panic's message is kept off stderr.
+pub fn read_guarded(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<String>)> {
+    match quietly(|| read(bytes, path, name)) {
         Ok(r) => r,
         Err(_) => bail!("malformed glTF file {name}: the gltf crate could not read it"),
     }
+}
+
+thread_local! {
+    static QUIET: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// catch_unwind, with the panic hook silent on this thread meanwhile (the
+/// hook stays as it was for every other panic, on every thread).
+fn quietly<T>(f: impl FnOnce() -> T + std::panic::UnwindSafe) -> std::thread::Result<T> {
+    static HOOK: std::sync::Once = std::sync::Once::new();
+    HOOK.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if !QUIET.with(|q| q.get()) {
+                previous(info)
+            }
+        }));
+    });
+    QUIET.with(|q| q.set(true));
+    let r = std::panic::catch_unwind(f);
+    QUIET.with(|q| q.set(false));
+    r
 }
 
 /// `load_gltf` on bytes already read; `path` locates external buffers.

@@ -179,3 +179,37 @@ fn a_file_too_large_is_refused_before_it_is_read() {
     assert!(e.contains("larger than") && e.contains("big.glb"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn corrupted_files_are_errors_never_panics() {
+    // Bytes of the arm changed at random (a fixed seed): each read is Ok
+    // or an error. Some of these make the gltf crate panic inside; the
+    // guard turns that into an error, and no panic escapes.
+    let glb = write_glb(&arm());
+    let mut state = 0x9e37_79b9_u64;
+    let mut next = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 33) as usize
+    };
+    let mut panics = 0;
+    for _ in 0..2000 {
+        let mut bytes = glb.clone();
+        for _ in 0..1 + next() % 8 {
+            // Half the time in the JSON chunk, where structure lives.
+            let json = 20 + u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+            let at = next() % if next() % 2 == 0 { json } else { bytes.len() };
+            bytes[at] = next() as u8;
+        }
+        let r = std::panic::catch_unwind(|| {
+            super::read_guarded(&bytes, Path::new("t.glb"), "t.glb").map(|_| ())
+        });
+        match r {
+            Err(_) => panics += 1,
+            Ok(Err(e)) => assert!(e.to_string().contains("t.glb"), "{e}"),
+            Ok(Ok(())) => {}
+        }
+    }
+    assert_eq!(panics, 0);
+}

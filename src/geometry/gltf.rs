@@ -243,12 +243,20 @@ pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<S
         );
     }
     let clips = read_clips(&file, name, &get, &mut warnings)?;
+    // Every node index in range, so that posing can index without checks
+    // (the crate validates them; this holds even if it did not).
+    let in_range = |n: usize| n < nodes.len();
+    let joint_nodes: Vec<usize> = skin.joints().map(|j| j.index()).collect();
+    let channel_nodes = clips.iter().flat_map(|c| c.channels.iter().map(|ch| ch.node));
+    if !(in_range(node.index()) && joint_nodes.iter().copied().chain(channel_nodes).all(in_range)) {
+        bail!("malformed glTF file {name}: a node index is out of range");
+    }
     let skinned = SkinnedMesh {
         mesh: data,
         joints,
         weights,
         nodes,
-        joint_nodes: skin.joints().map(|j| j.index()).collect(),
+        joint_nodes,
         inverse_bind,
         mesh_node: node.index(),
         clips,

@@ -25,6 +25,7 @@
 
 mod alloc;
 mod cli;
+mod gltf;
 mod obj;
 mod png;
 mod regressions;

@@ -185,6 +185,19 @@ fn run(mut cli: Cli) -> Result<()> {
             let s = load_scene(&scene, &cli.set, path, lights)?;
             let unchecked = gloss::frame::check::check_without_gl(&s)?;
             print!("{}", gloss::techniques::plan(&s));
+            let c = gloss::frame::culling::scene_stats(&s)?;
+            println!(
+                "frustum culling ({}): the camera sees {} of {} opaque objects, {} culled, in {} sphere and box tests",
+                if s.render.frustum_culling {
+                    "on"
+                } else {
+                    "off: every object is drawn"
+                },
+                c.drawn,
+                c.objects,
+                c.culled,
+                c.tests
+            );
             println!(
                 "not checked without a GL context (gloss render checks them): {}",
                 unchecked.join(", ")

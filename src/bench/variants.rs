@@ -121,6 +121,16 @@ pub(super) fn run(
     if !reference_scene.post.is_empty() {
         println!("{}", super::post::floor_table(ctx, args, &reference_scene)?);
     }
+    // What frustum culling (notes 01 §6.3) kept from the camera's passes.
+    for (label, scene) in &scenes {
+        let c = crate::frame::culling::scene_stats(scene)?;
+        if scene.render.frustum_culling && c.culled > 0 {
+            println!(
+                "{label}: frustum culling drew {} of {} opaque objects, culled {}, in {} sphere and box tests",
+                c.drawn, c.objects, c.culled, c.tests
+            );
+        }
+    }
     Ok(())
 }
 

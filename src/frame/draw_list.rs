@@ -6,6 +6,7 @@
 //! passes skip the `transparent` items; the transparency pass draws them.
 
 use crate::frame::billboards::BillboardDraws;
+use crate::frame::culling::{CullStats, CullTree};
 use crate::frame::skins::SkinDraw;
 use crate::geometry::MeshData;
 use crate::gl::Gl;
@@ -13,9 +14,11 @@ use crate::gl::mesh::Mesh;
 use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture};
 use crate::math;
+use crate::math::frustum::Frustum;
 use crate::scene::{Cull, DepthFunc, MeshSource, Scene};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
+use std::cell::Cell;
 use std::collections::HashMap;
 use std::path::PathBuf;
 
@@ -67,6 +70,12 @@ pub struct DrawList {
     pub billboards: BillboardDraws,
     /// The skinned objects (src/frame/skins.rs), each with its own mesh.
     pub skins: Vec<SkinDraw>,
+    /// The objects' boxes through the scene graph, for frustum culling
+    /// (src/frame/culling.rs), and each object's parent.
+    cull_tree: CullTree,
+    parents: Vec<Option<usize>>,
+    /// What the last culled `opaque_order` did (the demo and the bench show it).
+    pub last_cull: Cell<CullStats>,
 }
 
 impl DrawList {
@@ -145,9 +154,20 @@ impl DrawList {
             bounds,
             billboards: BillboardDraws::new(gl, scene)?,
             skins,
+            cull_tree: CullTree::default(),
+            parents: scene.objects.iter().map(|o| o.parent).collect(),
+            last_cull: Cell::default(),
         };
         list.pose_skins(scene);
+        list.grow_cull_tree();
         Ok(list)
+    }
+
+    /// The culling tree again, from the models and boxes as they are now.
+    fn grow_cull_tree(&mut self) {
+        let models: Vec<Mat4> = self.items.iter().map(|d| d.model).collect();
+        let local: Vec<(Vec3, Vec3)> = self.items.iter().map(|d| self.bounds[d.mesh]).collect();
+        self.cull_tree = CullTree::new(&models, &local, &self.parents);
     }
 
     /// Pose every skinned object at the scene's time (on the CPU, skin it
@@ -185,6 +205,7 @@ impl DrawList {
             d.depth_func = m.depth_func;
         }
         self.pose_skins(scene);
+        self.grow_cull_tree();
     }
 
     /// The corners of every opaque object's box, in world space: what a
@@ -205,10 +226,20 @@ impl DrawList {
     /// `view` when `sorted` (notes 01 §6.2: the depth test then rejects
     /// hidden fragments before they are shaded), else in the scene's order.
     /// A big object's centre says little about its nearest point: a floor
-    /// under everything sorts by its middle.
-    pub fn opaque_order(&self, view: &Mat4, sorted: bool) -> Vec<usize> {
+    /// under everything sorts by its middle. With `cull` (a view-projection
+    /// matrix), only the objects inside its frustum (notes 01 §6.3).
+    pub fn opaque_order(&self, view: &Mat4, cull: Option<&Mat4>, sorted: bool) -> Vec<usize> {
+        let wanted: Vec<bool> = (self.items.iter())
+            .map(|d| !d.transparent && !d.mirror)
+            .collect();
+        let seen = cull.map(|vp| {
+            let (seen, stats) =
+                (self.cull_tree).visible(&Frustum::from_view_projection(vp), &wanted);
+            self.last_cull.set(stats);
+            seen
+        });
         let mut order: Vec<usize> = (0..self.items.len())
-            .filter(|&i| !self.items[i].transparent && !self.items[i].mirror)
+            .filter(|&i| wanted[i] && seen.as_ref().is_none_or(|s| s[i]))
             .collect();
         if sorted {
             let depth = |i: usize| {
@@ -256,7 +287,7 @@ pub fn normal_matrix(model: &Mat4) -> Mat3 {
 
 /// The axis-aligned box around the mesh's vertices (a point at the origin
 /// for an empty mesh).
-fn mesh_bounds(data: &MeshData) -> (Vec3, Vec3) {
+pub fn mesh_bounds(data: &MeshData) -> (Vec3, Vec3) {
     let mut lo = Vec3::splat(f32::INFINITY);
     let mut hi = Vec3::splat(f32::NEG_INFINITY);
     for v in &data.vertices {

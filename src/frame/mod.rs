@@ -22,6 +22,7 @@
 pub mod billboards;
 pub mod check;
 pub mod clusters;
+pub mod culling;
 pub mod draw_list;
 pub mod gbuffer;
 pub mod lights;

@@ -133,6 +133,28 @@ impl Programs<'_> {
     }
 }
 
+impl Frame<'_> {
+    /// The opaque objects this view draws, in the order it draws them:
+    /// those inside its frustum (notes 01 §6.3, `render.frustum_culling`),
+    /// front to back (§6.2, `render.sort_opaque`). A convex mirror's view
+    /// moves each vertex on its own, so it culls nothing.
+    pub fn opaque_order(&self) -> Vec<usize> {
+        let view = self.uniforms.view * self.view.reflection;
+        let settings = &self.scene.render;
+        let cull = (settings.frustum_culling && self.view.curved.is_none())
+            .then(|| self.uniforms.projection * view);
+        // The counts the demo shows are the camera's: a reflection's or a
+        // split view's walk leaves them as they were.
+        let camera = self.view.reflection == glam::Mat4::IDENTITY && self.view.camera.is_none();
+        let before = self.draws.last_cull.get();
+        let order = (self.draws).opaque_order(&view, cull.as_ref(), settings.sort_opaque);
+        if !camera {
+            self.draws.last_cull.set(before);
+        }
+        order
+    }
+}
+
 /// What a pass is given: the scene, this frame's values, and the GL objects
 /// the renderer owns.
 pub struct Frame<'a> {

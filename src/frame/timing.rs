@@ -17,6 +17,8 @@ pub struct PassTimes {
     /// Per pass, from GL_TIMESTAMP queries (ms); empty where not measured.
     pub gpu: Vec<f64>,
     pub frame_ms: f64,
+    /// What frustum culling kept of the camera's opaque objects (None: off).
+    pub culling: Option<crate::frame::culling::CullStats>,
 }
 
 /// Does this renderer's timer-query clock tell the truth? Not on Mesa's

@@ -247,8 +247,16 @@ pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<S
     // (the crate validates them; this holds even if it did not).
     let in_range = |n: usize| n < nodes.len();
     let joint_nodes: Vec<usize> = skin.joints().map(|j| j.index()).collect();
-    let channel_nodes = clips.iter().flat_map(|c| c.channels.iter().map(|ch| ch.node));
-    if !(in_range(node.index()) && joint_nodes.iter().copied().chain(channel_nodes).all(in_range)) {
+    let channel_nodes = clips
+        .iter()
+        .flat_map(|c| c.channels.iter().map(|ch| ch.node));
+    if !(in_range(node.index())
+        && joint_nodes
+            .iter()
+            .copied()
+            .chain(channel_nodes)
+            .all(in_range))
+    {
         bail!("malformed glTF file {name}: a node index is out of range");
     }
     let skinned = SkinnedMesh {

@@ -1,6 +1,8 @@
-//! A tiny linear congruential generator for tests: the same numbers on
-//! every run, and no crate (Knuth's MMIX constants, the top 24 bits).
+//! A tiny linear congruential generator for tests and seeded scenes
+//! (`[[object_fields]]`): the same numbers on every run, and no crate
+//! (Knuth's MMIX constants, the top 24 bits).
 
+#[cfg(test)]
 use glam::Vec3;
 
 pub struct Lcg(pub u64);
@@ -21,6 +23,7 @@ impl Lcg {
     }
 
     /// A vector with each coordinate in [lo, hi).
+    #[cfg(test)]
     pub fn vec(&mut self, lo: f32, hi: f32) -> Vec3 {
         Vec3::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
     }

@@ -33,9 +33,9 @@ pub mod shadow;
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 pub mod depth;
+pub mod frustum;
 pub mod gaussian;
 pub mod keyframes;
-#[cfg(test)]
 pub(crate) mod lcg;
 pub mod skinning;
 pub mod slerp;

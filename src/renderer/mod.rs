@@ -341,6 +341,8 @@ impl Renderer {
             after_pass(pass);
         }
         self.last_times = timer.finish();
+        self.last_times.culling =
+            (self.scene.render.frustum_culling).then(|| self.draws.last_cull.get());
         self.debug.check(&self.gl, "the frame")?;
         Ok(())
     }

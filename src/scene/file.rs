@@ -28,6 +28,9 @@ pub(super) struct SceneFile {
     pub(super) materials: HashMap<String, MaterialFile>,
     #[serde(default)]
     pub(super) objects: Vec<ObjectFile>,
+    /// Seeded groups of objects (src/scene/object_fields.rs).
+    #[serde(default)]
+    pub(super) object_fields: Vec<super::object_fields::ObjectFieldFile>,
     #[serde(default)]
     pub(super) billboards: Vec<BillboardFile>,
     #[serde(default)]
@@ -110,6 +113,7 @@ pub(super) struct RenderFile {
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
     pub(super) msaa: u32,
+    pub(super) frustum_culling: bool,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
 }
@@ -141,6 +145,7 @@ impl Default for RenderFile {
             sort_opaque: true,
             post_chain: super::settings::ChainForm::PingPong,
             msaa: 1,
+            frustum_culling: true,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
         }

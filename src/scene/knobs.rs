@@ -268,6 +268,19 @@ pub static SORT_OPAQUE: Knob = Knob {
     },
 };
 
+pub static FRUSTUM_CULLING: Knob = Knob {
+    key: "render.frustum_culling",
+    label: "frustum culling",
+    help: "draw only the opaque objects whose bounds reach into the view's frustum (notes 01 §6.3), walking the scene graph: a subtree wholly outside costs one test",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.frustum_culling),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.frustum_culling = b;
+        }
+    },
+};
+
 pub static MSAA: Knob = Knob {
     key: "render.msaa",
     label: "MSAA samples",
@@ -304,6 +317,7 @@ pub static ALL: &[&Knob] = &[
     &BILLBOARD_ALPHA_REF,
     &SORT_TRANSPARENT,
     &SORT_OPAQUE,
+    &FRUSTUM_CULLING,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,

@@ -22,6 +22,7 @@ mod light_grid;
 mod lights;
 pub mod meshes;
 mod mirrors;
+pub mod object_fields;
 mod overrides;
 pub mod particles;
 pub mod post;

@@ -123,6 +123,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             }
             r.msaa
         },
+        frustum_culling: r.frustum_culling,
         skinning_on: r.skinning_on,
         joint_storage: r.joint_storage,
     })

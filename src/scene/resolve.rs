@@ -31,7 +31,10 @@ pub use super::render_settings::{
 };
 
 /// Checks every section of `f` (read from `path`) and builds the [`Scene`].
-pub(super) fn resolve(f: SceneFile, path: &Path) -> Result<Scene> {
+pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
+    // The fields' objects, after the file's own.
+    let generated = super::object_fields::expand(&f.object_fields)?;
+    f.objects.extend(generated);
     let base = path.parent().unwrap_or(Path::new("."));
     let name = f.name.clone().unwrap_or_else(|| {
         path.file_stem()

@@ -367,6 +367,8 @@ pub struct RenderSettings {
     /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4
     /// or 8 (src/techniques/fragment_tests/msaa.rs); 1 is no MSAA.
     pub msaa: u32,
+    /// Draw only the opaque objects inside the view's frustum (notes 01 §6.3).
+    pub frustum_culling: bool,
     /// Where skinned meshes are skinned: the GPU pass, or the CPU reference.
     pub skinning_on: SkinningOn,
     /// Where the skinning pass reads the joint matrices from.

@@ -126,3 +126,19 @@ fn each_skinned_object_gets_its_method_and_clip() {
     };
     assert_eq!(skin.clip, None);
 }
+
+#[test]
+fn the_timings_show_what_frustum_culling_kept() {
+    let ctx = common::context(common::backend());
+    let mut city = common::scene("frustum-culling.toml");
+    city.render.size = (64, 36);
+    let mut r = Renderer::new(&ctx.gl, &ctx.debug, &city, &Sources::Embedded, 64, 36).unwrap();
+    r.render(&city.camera).unwrap();
+    let c = r.last_times.culling.unwrap();
+    let line = format!(
+        "frustum culling: {} of {} opaque objects drawn, {} culled ({} tests)",
+        c.drawn, c.objects, c.culled, c.tests
+    );
+    let mut d = Driver::new();
+    assert!(d.find(&input(&city, &r), &line).is_some(), "{line}");
+}

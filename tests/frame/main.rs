@@ -6,6 +6,7 @@
 mod common;
 
 mod animation;
+mod culling;
 mod face_culling;
 mod particles;
 mod passes;

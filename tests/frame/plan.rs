@@ -283,10 +283,10 @@ fn opaque_objects_are_drawn_front_to_back_and_the_image_does_not_change() {
         let d = &draws.items[i];
         -view.transform_point3(d.model.transform_point3(d.centre)).z
     };
-    let sorted = draws.opaque_order(&view, true);
+    let sorted = draws.opaque_order(&view, None, true);
     let depths: Vec<f32> = sorted.iter().map(|&i| depth(i)).collect();
     assert!(depths.windows(2).all(|w| w[0] <= w[1]), "{depths:?}");
-    let unsorted = draws.opaque_order(&view, false);
+    let unsorted = draws.opaque_order(&view, None, false);
     assert!(unsorted.windows(2).all(|w| w[0] < w[1]), "the file's order");
     assert_eq!(sorted.len(), unsorted.len());
     assert_ne!(sorted, unsorted, "many-lights lists its floor first");

@@ -62,6 +62,12 @@ impl Timings {
                         ui.end_row();
                     }
                 });
+                if let Some(c) = &times.culling {
+                    ui.label(format!(
+                        "frustum culling: {} of {} opaque objects drawn, {} culled ({} tests)",
+                        c.drawn, c.objects, c.culled, c.tests
+                    ));
+                }
                 let start = self.count.saturating_sub(self.frames.len() as u64);
                 let points: Vec<[f64; 2]> = self
                     .frames

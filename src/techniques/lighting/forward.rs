@@ -171,8 +171,7 @@ impl RunPasses for Forward {
             let mut depth_func = settings.depth_func;
             // Transparent objects are drawn later, sorted (blending/transparency.rs);
             // mirrors by the mirror technique (stencil/mirror.rs).
-            let view = f.uniforms.view * f.view.reflection;
-            for i in f.draws.opaque_order(&view, f.scene.render.sort_opaque) {
+            for i in f.opaque_order() {
                 let d = &f.draws.items[i];
                 // The material's face culling (notes 01 §3.4): back faces
                 // (the default), front faces, both, or none.

@@ -5,7 +5,8 @@
 //   c_d = max(N . L, 0) * k_d
 //   c_s = max(N . H, 0)^n * k_s,  H = normalize(L + V)   (the notes' 1/2 (V + L)
 //                                 is not unit length; normalise instead)
-//   att = 1 / (Kc + Kl d + Kq d^2)      (times a window with render.falloff = "windowed")
+//   att = 1 / (Kc + Kl d + Kq d^2)      (times a window with render.falloff = "windowed";
+//                                        1 - d / Lmax with render.falloff = "linear")
 //
 // A point or spot light is a sphere of radius LIGHT_RADIUS, not a point
 // (src/math/sphere_light.rs says why and cites it): att is taken at
@@ -23,6 +24,10 @@
 // (1 - (d / r)^4)^2, clamped, which is 0 from the radius r on (Karis 2013,
 // "Real Shading in Unreal Engine 4"). A different model from the notes'.
 #define LIGHT_WINDOWED 4
+// Added to the type for notes 01 §8.3's linear attenuation (render.falloff
+// = "linear", src/frame/lights.rs LINEAR): att = 1 - d / Lmax, 0 from Lmax
+// on, with Lmax the volume radius; Kc, Kl, Kq unused.
+#define LIGHT_LINEAR 8
 
 // std140, 64 bytes a light (src/lighting.rs writes this layout).
 struct Light {
@@ -74,6 +79,9 @@ float light_factor(Light light, vec3 P, out vec3 L, out float sin_sigma) {
     sin_sigma = LIGHT_RADIUS / r;
     vec3 k = light.atten_cos_inner.xyz;
     float att = 1.0 / (k.x + k.y * r + k.z * r * r);
+    if ((code & LIGHT_LINEAR) != 0) {
+        att = clamp(1.0 - d / light.direction_radius.w, 0.0, 1.0);
+    }
     if ((code & LIGHT_WINDOWED) != 0) {
         float radius = light.direction_radius.w;
         float x = radius > 0.0 ? d / radius : 1.0;

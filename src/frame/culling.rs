@@ -126,10 +126,10 @@ impl CullTree {
             };
             stack.extend(self.children[i].iter().map(|&c| (c, false)));
         }
-        for i in 0..seen.len() {
+        for (i, &shown) in seen.iter().enumerate() {
             if wanted.get(i).copied().unwrap_or(true) {
                 stats.objects += 1;
-                if seen[i] {
+                if shown {
                     stats.drawn += 1;
                 } else {
                     stats.culled += 1;

@@ -18,6 +18,9 @@ pub const LIGHT_STRIDE: usize = 64;
 /// Added to a light's type code when its attenuation is windowed
 /// (`render.falloff = "windowed"`; LIGHT_WINDOWED in glsl/common/lighting.glsl).
 pub const WINDOWED: f32 = 4.0;
+/// Added to a light's type code for notes 01's linear attenuation
+/// (`render.falloff = "linear"`; LIGHT_LINEAR in glsl/common/lighting.glsl).
+pub const LINEAR: f32 = 8.0;
 
 /// The most lights gloss's `Lights` block holds on any GL.
 pub const MAX_LIGHTS: usize = 1024;
@@ -134,12 +137,11 @@ pub struct FrameLights {
 impl FrameLights {
     /// Compute each light's radius at the scene's cutoff and its volume.
     pub fn new(scene: &Scene) -> FrameLights {
-        let cutoff = scene.render.cutoff;
         let lights = scene
             .lights
             .iter()
             .map(|l| {
-                let radius = radius(l, cutoff);
+                let radius = model_radius(l, scene.render.cutoff, scene.render.falloff);
                 FrameLight {
                     radius,
                     volume: volume(l, radius),
@@ -170,8 +172,8 @@ impl FrameLights {
     /// Pack the lights as glsl/common/lighting.glsl's `struct Light` (std140):
     /// position + type, direction + radius (-1: none), colour x intensity +
     /// cos(outer), (Kc, Kl, Kq) + cos(inner). The type is 0 directional, 1
-    /// point, 2 spot, plus `WINDOWED` when the scene's falloff is windowed
-    /// and the light has a radius: the flag travels with the light to every
+    /// point, 2 spot, plus `WINDOWED` or `LINEAR` when the scene's falloff
+    /// is windowed or linear and the light has a radius: the flag travels with the light to every
     /// path, through the uniform block and tiled shading's buffer texture
     /// alike.
     pub fn pack(&self, scene: &Scene) -> Vec<u8> {
@@ -182,8 +184,10 @@ impl FrameLights {
                 LightKind::Point => 1.0,
                 LightKind::Spot => 2.0,
             };
-            if scene.render.falloff == Falloff::Windowed && f.radius.is_some() {
-                ty += WINDOWED;
+            match scene.render.falloff {
+                Falloff::Windowed if f.radius.is_some() => ty += WINDOWED,
+                Falloff::Linear if f.radius.is_some() => ty += LINEAR,
+                _ => {}
             }
             let c = l.radiance();
             let v = [
@@ -217,6 +221,19 @@ pub fn radius(light: &Light, cutoff: f32) -> Option<f32> {
     }
 }
 
+/// The light's volume radius under the falloff model: for the notes' and the
+/// windowed model the radius at `cutoff` (`radius`); for the linear model
+/// Lmax, where its attenuation 1 - d / Lmax reaches 0: the light's `range`,
+/// or else the radius at the cutoff.
+pub fn model_radius(light: &Light, cutoff: f32, falloff: Falloff) -> Option<f32> {
+    let r = radius(light, cutoff);
+    match (falloff, light.kind) {
+        (_, LightKind::Directional) => None,
+        (Falloff::Linear, _) => light.range.or(r),
+        _ => r,
+    }
+}
+
 fn volume(light: &Light, radius: Option<f32>) -> Volume {
     match (light.kind, radius) {
         (LightKind::Point, Some(r)) => Volume::Sphere(
@@ -244,6 +261,7 @@ mod tests {
 
     fn spot() -> Light {
         Light {
+            range: None,
             kind: LightKind::Spot,
             position: Vec3::new(1.0, 2.0, 3.0),
             direction: Vec3::NEG_Y,

@@ -14,7 +14,7 @@ pub mod triangle;
 pub mod window;
 
 use crate::math::sphere_light;
-use crate::scene::{Light, LightKind, Material};
+use crate::scene::{Falloff, Light, LightKind, Material};
 use glam::Vec3;
 
 /// GLSL's smoothstep.
@@ -28,12 +28,15 @@ pub fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 /// `light_factor`. A point or spot light is a sphere of radius
 /// `sphere_light::LIGHT_RADIUS`: attenuated at no less than that distance.
 pub fn light_factor(l: &Light, p: Vec3) -> (f32, Vec3, f32) {
-    light_factor_windowed(l, p, None)
+    light_factor_with(l, p, None)
 }
 
-/// `light_factor`, with the windowed falloff (`window`) at `radius` when it
-/// is Some: glsl `light_factor` for a light whose type has LIGHT_WINDOWED.
-pub fn light_factor_windowed(l: &Light, p: Vec3, radius: Option<f32>) -> (f32, Vec3, f32) {
+/// `light_factor` under another falloff model, with the light's volume
+/// radius (`frame::lights::model_radius`): the windowed one (`window`), as
+/// glsl does for a light whose type has LIGHT_WINDOWED, or notes 01's linear
+/// one, 1 - d / Lmax with Lmax the radius (LIGHT_LINEAR). None, or the
+/// notes' model: 1 / (Kc + Kl d + Kq d^2).
+pub fn light_factor_with(l: &Light, p: Vec3, model: Option<(Falloff, f32)>) -> (f32, Vec3, f32) {
     match l.kind {
         LightKind::Directional => (1.0, -l.direction, 0.0),
         _ => {
@@ -42,8 +45,10 @@ pub fn light_factor_windowed(l: &Light, p: Vec3, radius: Option<f32>) -> (f32, V
             let dir = to / d.max(1e-20);
             let r = d.max(sphere_light::LIGHT_RADIUS);
             let mut att = 1.0 / (l.kc + l.kl * r + l.kq * r * r);
-            if let Some(radius) = radius {
-                att *= window::window(d, radius);
+            match model {
+                Some((Falloff::Windowed, radius)) => att *= window::window(d, radius),
+                Some((Falloff::Linear, lmax)) => att = (1.0 - d / lmax).clamp(0.0, 1.0),
+                _ => {}
             }
             if l.kind == LightKind::Spot {
                 let c = (-dir).dot(l.direction);
@@ -60,19 +65,19 @@ pub fn light_factor_windowed(l: &Light, p: Vec3, radius: Option<f32>) -> (f32, V
 
 /// Diffuse and specular light from one light (before the material), as glsl `phong_light`.
 pub fn phong_light(l: &Light, p: Vec3, n: Vec3, v: Vec3, shininess: f32) -> (Vec3, Vec3) {
-    phong_light_windowed(l, p, n, v, shininess, None)
+    phong_light_with(l, p, n, v, shininess, None)
 }
 
-/// `phong_light` with the windowed falloff at `radius` when it is Some.
-pub fn phong_light_windowed(
+/// `phong_light` under another falloff model (`light_factor_with`).
+pub fn phong_light_with(
     l: &Light,
     p: Vec3,
     n: Vec3,
     v: Vec3,
     shininess: f32,
-    radius: Option<f32>,
+    model: Option<(Falloff, f32)>,
 ) -> (Vec3, Vec3) {
-    let (f, dir, sin_sigma) = light_factor_windowed(l, p, radius);
+    let (f, dir, sin_sigma) = light_factor_with(l, p, model);
     let i = l.radiance() * f;
     let horizon = sphere_light::sphere_cosine(n.dot(dir), sin_sigma);
     let n_dot_l = horizon.cosine;

@@ -173,6 +173,8 @@ pub(super) struct LightFile {
     pub(super) outer_angle: f32,
     /// `true`, or a table of shadow-map knobs (src/scene/shadows.rs).
     pub(super) shadow: Option<toml::Value>,
+    /// Lmax of the linear falloff (`render.falloff = "linear"`).
+    pub(super) range: Option<f32>,
 }
 
 fn white() -> [f32; 3] {

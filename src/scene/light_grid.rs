@@ -67,6 +67,7 @@ pub(super) fn generate_lights(g: &LightGrid) -> Vec<Light> {
                 _ => Vec3::new(1.0, 0.1, 1.0 - f),
             };
             Light {
+                range: None,
                 kind: LightKind::Point,
                 position: Vec3::new(x, y, z),
                 direction: Vec3::NEG_Y,

@@ -58,7 +58,16 @@ pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
                 l.outer_angle
             );
         }
+        if let Some(r) = l.range
+            && !(r.is_finite() && r > 0.0 && r <= 1e6)
+        {
+            bail!(
+                "{}: expected a distance in (0, 1e6], found {r}",
+                key("range")
+            );
+        }
         let light = Light {
+            range: l.range,
             kind,
             position,
             direction,

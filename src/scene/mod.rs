@@ -116,6 +116,9 @@ pub struct Light {
     pub outer_angle: f32,
     /// Casts shadows (notes 01 §8.5) with these knobs.
     pub shadow: Option<Shadow>,
+    /// Lmax of notes 01's linear attenuation a = 1 - d / Lmax
+    /// (`render.falloff = "linear"`); None: the volume radius at the cutoff.
+    pub range: Option<f32>,
 }
 
 impl Light {

@@ -209,6 +209,11 @@ setting! {
         /// reaches 0 exactly at the radius, (1 - (d / r)^4)^2 clamped
         /// (Karis 2013). The cutoff then drops nothing.
         Windowed = "windowed",
+        /// Notes 01 §8.3's a = 1 - d / Lmax, 0 from Lmax on, with Lmax the
+        /// light's `range` (default: its volume radius at the cutoff under
+        /// the notes' attenuation). Kc, Kl, Kq are not used. The light
+        /// volume's radius is Lmax itself, so the volume paths cut nothing.
+        Linear = "linear",
     }
 }
 

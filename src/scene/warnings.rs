@@ -9,8 +9,8 @@
 //! default is what "no effect" looks like anyway, and "save as" writes it.
 
 use super::{
-    Accumulation, AlphaTest, BillboardMode, CubeRender, DeferredLights, LightKind, MirrorOrder,
-    Projection, RenderPath, Scene, Shading, ShadowFit,
+    Accumulation, AlphaTest, BillboardMode, CubeRender, DeferredLights, Falloff, LightKind,
+    MirrorOrder, Projection, RenderPath, Scene, Shading, ShadowFit,
 };
 
 impl Scene {
@@ -226,6 +226,11 @@ impl Scene {
                     "only a spot light has a cone",
                 );
             }
+            warn(
+                "range",
+                directional,
+                "a directional light is not attenuated",
+            );
             let shadow = l.shadow.as_ref();
             warn(
                 "shadow.cube",
@@ -238,6 +243,13 @@ impl Scene {
                 shadow.is_some_and(|s| s.fit != ShadowFit::Visible) && !directional,
                 "only a directional light's shadow box is fitted (spot and point lights see from their position)",
             );
+            let range = format!("lights[{i}].range");
+            if !directional && self.render.falloff != Falloff::Linear && self.written(&range) {
+                w.push(format!(
+                    "{range} has no effect with render.falloff = \"{}\": only the linear falloff, 1 - d / range, reads it",
+                    self.render.falloff
+                ));
+            }
         }
     }
 

@@ -76,6 +76,7 @@ fn interpolated_far_field_stays_near_forward() {
 
 fn point(position: Vec3, k: [f32; 3]) -> Light {
     Light {
+        range: None,
         kind: LightKind::Point,
         position,
         direction: Vec3::NEG_Y,

@@ -81,6 +81,7 @@ fn tiled_shading_with_a_tiny_cutoff_matches_forward() {
 
 fn point(position: Vec3, color: Vec3, k: [f32; 3]) -> Light {
     Light {
+        range: None,
         kind: LightKind::Point,
         position,
         direction: Vec3::NEG_Y,

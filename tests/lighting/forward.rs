@@ -6,8 +6,8 @@
 use crate::common;
 
 use glam::Vec3;
-use gloss::frame::lights::radius;
-use gloss::lighting::{phong_light_windowed, srgb_encode};
+use gloss::frame::lights::model_radius;
+use gloss::lighting::{phong_light_with, srgb_encode};
 use gloss::renderer::Output;
 use gloss::scene::{Camera, Falloff, Projection, Scene, Shading};
 
@@ -32,11 +32,12 @@ fn world_at(cam: &Camera, w: u32, h: u32, px: u32, py: u32) -> Vec3 {
 fn check_plane(scene: &Scene, label: &str) -> f32 {
     let r = common::render(scene, Output::Srgb8);
     let m = &scene.materials[scene.objects[0].material];
-    // The windowed falloff ends each light at its radius at the cutoff.
-    let radii: Vec<Option<f32>> = (scene.lights.iter())
+    // The windowed falloff ends each light at its radius at the cutoff; the
+    // linear one at Lmax.
+    let radii: Vec<Option<(Falloff, f32)>> = (scene.lights.iter())
         .map(|l| match scene.render.falloff {
-            Falloff::Windowed => radius(l, scene.render.cutoff),
             Falloff::Notes => None,
+            f => model_radius(l, scene.render.cutoff, f).map(|r| (f, r)),
         })
         .collect();
     let mut worst = 0.0f32;
@@ -46,7 +47,7 @@ fn check_plane(scene: &Scene, label: &str) -> f32 {
             let v = (scene.camera.eye - p).normalize();
             let mut c = scene.render.ambient * m.diffuse;
             for (l, &radius) in scene.lights.iter().zip(&radii) {
-                let (d, s) = phong_light_windowed(l, p, Vec3::Y, v, m.shininess, radius);
+                let (d, s) = phong_light_with(l, p, Vec3::Y, v, m.shininess, radius);
                 c += m.diffuse * d + m.specular * s;
             }
             let got = r.image.get_pixel(px, py);
@@ -207,4 +208,58 @@ fn a_lit_plane_under_the_windowed_falloff_equals_the_cpu_formula() {
         m.max_abs > 10.0 / 255.0,
         "the window changes the image: {m}"
     );
+}
+
+#[test]
+fn the_notes_linear_attenuation_per_pixel() {
+    // Notes 01 §8.3: a = 1 - L / Lmax, 0 beyond. With Lmax = 2.5 the light's
+    // reach ends inside the picture: every pixel, lit or only ambient, is
+    // the CPU's Phong with that attenuation.
+    let mut scene = common::scene("plane.toml");
+    scene.render.falloff = Falloff::Linear;
+    scene.lights[0].range = Some(2.5);
+    check_plane(&scene, "linear, Lmax 2.5");
+    let r = common::render(&scene, Output::Srgb8);
+    let m = &scene.materials[scene.objects[0].material];
+    let ambient = (scene.render.ambient * m.diffuse).map(srgb_encode) * 255.0;
+    let dark = (r.image.pixels())
+        .filter(|p| (0..3).all(|c| (p[c] as f32 - ambient[c]).abs() <= 1.0))
+        .count();
+    assert!(
+        dark > 100,
+        "beyond Lmax only the ambient light is left ({dark} pixels)"
+    );
+}
+
+#[test]
+fn a_lights_range_is_checked_and_warned_about_where_it_does_nothing() {
+    let text = |range: &str, falloff: &str| {
+        format!(
+            "name = \"t\"\n[camera]\neye = [0.0, 1.0, 5.0]\ntarget = [0.0, 0.0, 0.0]\n[render]\nfalloff = \"{falloff}\"\n[[lights]]\ntype = \"point\"\nposition = [0.0, 1.0, 0.0]\nrange = {range}\n"
+        )
+    };
+    let path = common::root().join("scenes/t.toml");
+    for bad in ["-1.0", "0.0", "1e9"] {
+        let e = format!(
+            "{:#}",
+            Scene::parse(&text(bad, "linear"), &path).unwrap_err()
+        );
+        assert!(
+            e.contains("lights[0].range: expected a distance in (0, 1e6]"),
+            "{e}"
+        );
+    }
+    let s = Scene::parse(&text("4.0", "notes"), &path).unwrap();
+    assert!(
+        s.warnings()
+            .iter()
+            .any(|w| w.contains("lights[0].range has no effect with render.falloff = \"notes\"")),
+        "{:?}",
+        s.warnings()
+    );
+    let s = Scene::parse(&text("4.0", "linear"), &path).unwrap();
+    assert!(s.warnings().is_empty(), "{:?}", s.warnings());
+    // Its volume is exactly Lmax.
+    let lights = gloss::frame::lights::FrameLights::new(&s);
+    assert_eq!(lights.lights[0].radius, Some(4.0));
 }

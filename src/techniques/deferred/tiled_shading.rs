@@ -288,6 +288,7 @@ mod tests {
 
     fn spot(outer: f32) -> Light {
         Light {
+            range: None,
             kind: LightKind::Spot,
             position: Vec3::new(1.0, 2.0, 3.0),
             direction: Vec3::new(0.0, -0.6, -0.8),

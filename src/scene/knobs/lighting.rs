@@ -51,7 +51,7 @@ pub static ACCUMULATION: Knob = Knob {
 pub static FALLOFF: Knob = Knob {
     key: "render.falloff",
     label: "falloff",
-    help: "notes: 1 / (Kc + Kl d + Kq d^2), cut at the radius by the volume paths; windowed: a different model that reaches 0 at the radius, so no path cuts anything",
+    help: "notes: 1 / (Kc + Kl d + Kq d^2), cut at the radius by the volume paths; windowed: a different model that reaches 0 at the radius, so no path cuts anything; linear: notes 01's 1 - d / Lmax (a light's range), its volume exactly Lmax",
     kind: Kind::Choice(Falloff::WORDS),
     get: |r| Value::Choice(index(Falloff::ALL, r.falloff)),
     set: |r, v| {

@@ -35,5 +35,5 @@ void main() {
     vec3 world = a_center + right * (corner.x * a_size.x) + up * (corner.y * a_size.y);
     v_uv = vec2((a_sprite + corner.x + 0.5) / u_sprite_count, corner.y + 0.5);
     gl_Position = u_view_projection * view_position(vec4(world, 1.0));
-    gl_ClipDistance[0] = clip_distance(vec4(world, 1.0));
+    write_clip_distances(vec4(world, 1.0));
 }

@@ -30,9 +30,29 @@ vec4 view_position(vec4 world) {
     return vec4(world.xyz - 2.0 * dot(world.xyz - s, n) * n, 1.0);
 }
 
+// The scene's [[clip_planes]] (src/scene/clip_planes.rs), world space
+// (n, -n . p): gl_ClipDistance[1 + i] = dot(plane i, world), kept where it
+// is >= 0. The pass enables GL_CLIP_DISTANCE1 + i for each plane the scene
+// has; the others are written and ignored.
+uniform vec4 u_clip_planes[7];
+
 float clip_distance(vec4 world) {
     if (u_curved_mirror.w > 0.0) {
         return length(world.xyz - u_curved_mirror.xyz) - u_curved_mirror.w;
     }
     return dot(u_clip_plane, world);
+}
+
+// Every clip distance of a vertex at `world`: the mirror's (0), then the
+// scene's planes (1 to 7). Constant indices, so gl_ClipDistance's size (8,
+// GL 3.3's minimum of GL_MAX_CLIP_DISTANCES) is known without redeclaring it.
+void write_clip_distances(vec4 world) {
+    gl_ClipDistance[0] = clip_distance(world);
+    gl_ClipDistance[1] = dot(u_clip_planes[0], world);
+    gl_ClipDistance[2] = dot(u_clip_planes[1], world);
+    gl_ClipDistance[3] = dot(u_clip_planes[2], world);
+    gl_ClipDistance[4] = dot(u_clip_planes[3], world);
+    gl_ClipDistance[5] = dot(u_clip_planes[4], world);
+    gl_ClipDistance[6] = dot(u_clip_planes[5], world);
+    gl_ClipDistance[7] = dot(u_clip_planes[6], world);
 }

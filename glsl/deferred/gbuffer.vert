@@ -24,5 +24,5 @@ void main() {
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
     gl_Position = u_view_projection * view_position(world);
-    gl_ClipDistance[0] = clip_distance(world);
+    write_clip_distances(world);
 }

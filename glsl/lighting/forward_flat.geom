@@ -34,7 +34,7 @@ void main() {
     for (int k = 0; k < 3; ++k) {
         f_color = c;
         gl_Position = u_view_projection * view_position(vec4(g_position[k], 1.0));
-        gl_ClipDistance[0] = clip_distance(vec4(g_position[k], 1.0));
+        write_clip_distances(vec4(g_position[k], 1.0));
         EmitVertex();
     }
     EndPrimitive();

@@ -36,5 +36,5 @@ void main() {
     }
     v_uv = a_uv;
     gl_Position = u_view_projection * view_position(world);
-    gl_ClipDistance[0] = clip_distance(world);
+    write_clip_distances(world);
 }

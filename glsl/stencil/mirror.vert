@@ -16,5 +16,5 @@ void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
     v_uv = a_uv;
     gl_Position = u_view_projection * view_position(world);
-    gl_ClipDistance[0] = clip_distance(world);
+    write_clip_distances(world);
 }

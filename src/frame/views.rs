@@ -163,9 +163,15 @@ impl View {
 
     /// glUniform* for glsl/common/view.glsl (program `p` in use): the clip
     /// plane (zero: nothing, when GL_CLIP_DISTANCE0 is off), the curved
-    /// mirror (zero radius: none) and the eye it is seen from (this view's
-    /// eye, `FrameUniforms::eye`).
-    pub fn set_uniforms(&self, p: &Program, eye: Vec3) {
+    /// mirror (zero radius: none), the eye it is seen from (this view's
+    /// eye, `FrameUniforms::eye`), and the scene's clip planes (`planes`,
+    /// at most 7; zero beyond).
+    pub fn set_uniforms(&self, p: &Program, eye: Vec3, planes: &[Vec4]) {
+        let mut all = [Vec4::ZERO; 7];
+        for (a, b) in all.iter_mut().zip(planes) {
+            *a = *b;
+        }
+        p.set_vec4_array("u_clip_planes", &all);
         p.set_vec4("u_clip_plane", self.clip_plane.unwrap_or(Vec4::ZERO));
         p.set_vec4("u_curved_mirror", self.curved.unwrap_or(Vec4::ZERO));
         p.set_vec3("u_curved_eye", eye);

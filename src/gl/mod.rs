@@ -64,6 +64,11 @@ pub struct GlInfo {
     pub debug_context: bool,
     pub khr_debug: bool,
     pub max_uniform_block_size: i32,
+    /// GL_MAX_CLIP_DISTANCES: gl_ClipDistance's length (GL 3.3: at least 8).
+    pub max_clip_distances: i32,
+    /// GL_MAX_VERTEX_UNIFORM_COMPONENTS: what limits a skeleton's joints
+    /// in a uniform array (16 a matrix).
+    pub max_vertex_uniform_components: i32,
 }
 
 impl GlInfo {
@@ -86,6 +91,9 @@ impl GlInfo {
                 debug_context: flags & glow::CONTEXT_FLAG_DEBUG_BIT as i32 != 0,
                 khr_debug: gl.supported_extensions().contains("GL_KHR_debug"),
                 max_uniform_block_size: gl.get_parameter_i32(glow::MAX_UNIFORM_BLOCK_SIZE),
+                max_clip_distances: gl.get_parameter_i32(glow::MAX_CLIP_DISTANCES),
+                max_vertex_uniform_components: gl
+                    .get_parameter_i32(glow::MAX_VERTEX_UNIFORM_COMPONENTS),
             }
         }
     }
@@ -142,7 +150,18 @@ impl std::fmt::Display for GlInfo {
             "KHR_debug      {}",
             if self.khr_debug { "yes" } else { "no" }
         )?;
-        write!(f, "max UBO size   {} bytes", self.max_uniform_block_size)
+        writeln!(f, "max UBO size   {} bytes", self.max_uniform_block_size)?;
+        writeln!(
+            f,
+            "clip distances {} (one for mirrors, the rest for a scene's clip planes)",
+            self.max_clip_distances
+        )?;
+        write!(
+            f,
+            "vertex uniform components {} (skinning: {} joint matrices in a uniform array)",
+            self.max_vertex_uniform_components,
+            crate::math::skinning::uniform_joint_limit(self.max_vertex_uniform_components)
+        )
     }
 }
 

@@ -320,6 +320,12 @@ impl Program {
         }
     }
 
+    /// glUniform4fv with `v.len()` vectors, from element 0 of the array `name`.
+    pub fn set_vec4_array(&self, name: &str, v: &[glam::Vec4]) {
+        let flat: Vec<f32> = v.iter().flat_map(|x| x.to_array()).collect();
+        unsafe { self.gl.uniform_4_f32_slice(self.loc(name).as_ref(), &flat) }
+    }
+
     pub fn set_f32_array(&self, name: &str, v: &[f32]) {
         unsafe { self.gl.uniform_1_f32_slice(self.loc(name).as_ref(), v) }
     }

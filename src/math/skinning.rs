@@ -136,5 +136,17 @@ pub fn dual_quaternion_blend(
     (b.transform_point(v), (b.real * n).normalize_or_zero())
 }
 
+/// Uniform components kept back from the joint array for the shader's
+/// other uniforms (it has none now; a margin for drivers that count
+/// internal ones).
+const RESERVED_COMPONENTS: i32 = 64;
+
+/// How many joint matrices fit the uniform array on a GL that offers
+/// `components` (GL_MAX_VERTEX_UNIFORM_COMPONENTS; GL 3.3 guarantees 1024,
+/// so at least 60 joints).
+pub fn uniform_joint_limit(components: i32) -> usize {
+    ((components - RESERVED_COMPONENTS) / 16).max(1) as usize
+}
+
 #[cfg(test)]
 mod tests;

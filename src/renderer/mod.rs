@@ -93,6 +93,14 @@ impl Renderer {
             ),
             max_texels(gl),
         )?;
+        let clip = unsafe { gl.get_parameter_i32(glow::MAX_CLIP_DISTANCES) } as usize;
+        if scene.clip_planes.len() + 1 > clip {
+            anyhow::bail!(
+                "{}: {} clip planes, but this GL has GL_MAX_CLIP_DISTANCES = {clip}, one of them the mirrors'",
+                scene.path.display(),
+                scene.clip_planes.len()
+            );
+        }
         let lights = FrameLights::new(scene);
         let plan = FramePlan::new(scene, &lights, techniques::ALL);
         let targets = Targets::new(gl, &target_descs(&plan, output_kind), width, height)?;

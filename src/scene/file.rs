@@ -28,6 +28,9 @@ pub(super) struct SceneFile {
     pub(super) materials: HashMap<String, MaterialFile>,
     #[serde(default)]
     pub(super) objects: Vec<ObjectFile>,
+    /// Planes that cut the world open (src/scene/clip_planes.rs).
+    #[serde(default)]
+    pub(super) clip_planes: Vec<super::clip_planes::ClipPlaneFile>,
     /// Seeded groups of objects (src/scene/object_fields.rs).
     #[serde(default)]
     pub(super) object_fields: Vec<super::object_fields::ObjectFieldFile>,

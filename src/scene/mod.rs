@@ -15,6 +15,7 @@ pub mod animation;
 mod billboards;
 pub mod bloom;
 pub mod camera_limits;
+pub mod clip_planes;
 mod file;
 pub mod fxaa;
 pub mod knobs;
@@ -270,6 +271,9 @@ pub struct Scene {
     /// `[particles]`: a particle fountain, drawn as points a geometry shader
     /// turns into quads.
     pub particles: Option<particles::Particles>,
+    /// `[[clip_planes]]`: world-space planes (n, -n . p), |n| = 1; what lies
+    /// on the side n points away from is cut away (gl_ClipDistance[1..]).
+    pub clip_planes: Vec<glam::Vec4>,
     /// Every key the file and `--set` wrote, dotted (`render.cutoff`,
     /// `lights[0].shadow.cube`): `warnings` names those with no effect.
     pub keys_written: std::collections::BTreeSet<String>,

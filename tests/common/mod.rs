@@ -109,6 +109,8 @@ pub fn gl_state(gl: &glow::Context) -> Vec<(String, i64)> {
             ("FRAMEBUFFER_SRGB", glow::FRAMEBUFFER_SRGB),
             ("POLYGON_OFFSET_FILL", glow::POLYGON_OFFSET_FILL),
             ("CLIP_DISTANCE0", glow::CLIP_DISTANCE0),
+            ("CLIP_DISTANCE1", glow::CLIP_DISTANCE1),
+            ("CLIP_DISTANCE7", glow::CLIP_DISTANCE7),
             ("RASTERIZER_DISCARD", glow::RASTERIZER_DISCARD),
         ] {
             v.push((name.to_string(), gl.is_enabled(cap) as i64));

@@ -6,6 +6,7 @@
 mod common;
 
 mod animation;
+mod clip_planes;
 mod culling;
 mod face_culling;
 mod particles;

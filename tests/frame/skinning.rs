@@ -7,9 +7,9 @@
 
 use crate::common;
 use gloss::image_compare::{Tolerance, compare_rgba8};
+use gloss::math::skinning::uniform_joint_limit;
 use gloss::renderer::{Output, render_scene};
 use gloss::scene::{JointStorage, RenderPath, Scene, SkinMethod, SkinningOn};
-use gloss::techniques::animation::skinned_meshes::uniform_joint_limit;
 use glow::HasContext;
 use std::path::Path;
 

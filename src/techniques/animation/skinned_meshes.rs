@@ -32,6 +32,7 @@ use crate::frame::targets::{OUTPUT, TargetDesc};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::gl::texture_buffer::TextureBuffer;
+use crate::math::skinning::uniform_joint_limit;
 use crate::scene::knobs::{JOINT_STORAGE, SKINNING_ON};
 use crate::scene::{JointStorage, Scene, SkinMethod, SkinningOn};
 use anyhow::Result;
@@ -52,18 +53,6 @@ pub const SKINNED_MESHES: Technique = Technique {
     order: None,
     runs: Runs::BeforeViews,
 };
-
-/// Uniform components kept back from the joint array for the shader's
-/// other uniforms (it has none now; a margin for drivers that count
-/// internal ones).
-const RESERVED_COMPONENTS: i32 = 64;
-
-/// How many joint matrices fit the uniform array on a GL that offers
-/// `components` (GL_MAX_VERTEX_UNIFORM_COMPONENTS; GL 3.3 guarantees 1024,
-/// so at least 60 joints).
-pub fn uniform_joint_limit(components: i32) -> usize {
-    ((components - RESERVED_COMPONENTS) / 16).max(1) as usize
-}
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let skinned = scene.skinned_objects();

@@ -183,11 +183,15 @@ impl RunPasses for Billboards {
             if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
+            // The scene's clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.enable(glow::CLIP_DISTANCE1 + i);
+            }
 
             // 5. One instanced quad per billboard, corners from gl_VertexID.
             p.use_program();
             p.set_mat4("u_view", &view);
-            f.view.set_uniforms(p, f.uniforms.eye);
+            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_f32("u_sprite_count", b.sprite_count as f32);
             p.set_vec3("u_light", billboard_light(scene));
@@ -211,6 +215,9 @@ impl RunPasses for Billboards {
                 gl.disable(glow::BLEND);
             }
             gl.disable(glow::CLIP_DISTANCE0);
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.disable(glow::CLIP_DISTANCE1 + i);
+            }
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.color_mask(true, true, true, true);

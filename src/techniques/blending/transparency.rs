@@ -161,9 +161,13 @@ impl RunPasses for Transparency {
             if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
+            // The scene's clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.enable(glow::CLIP_DISTANCE1 + i);
+            }
 
             p.use_program();
-            f.view.set_uniforms(p, f.uniforms.eye);
+            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_vec3("u_eye", u.eye);
             p.set_vec3("u_ambient", f.scene.render.ambient);
@@ -195,6 +199,9 @@ impl RunPasses for Transparency {
 
             // Restore the state this pass changed.
             gl.disable(glow::CLIP_DISTANCE0);
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.disable(glow::CLIP_DISTANCE1 + i);
+            }
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);

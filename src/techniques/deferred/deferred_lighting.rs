@@ -194,6 +194,10 @@ impl DeferredLighting {
             if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
+            // The scene's clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.enable(glow::CLIP_DISTANCE1 + i);
+            }
             gl.enable(glow::CULL_FACE);
             gl.cull_face(glow::BACK);
 
@@ -205,7 +209,7 @@ impl DeferredLighting {
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_diffuse_light", unit::LIGHT as i32);
             p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
-            f.view.set_uniforms(p, f.uniforms.eye);
+            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[0].id));
             gl.active_texture(glow::TEXTURE0 + unit::SPECULAR_LIGHT);
@@ -234,6 +238,9 @@ impl DeferredLighting {
 
             gl.front_face(glow::CCW);
             gl.disable(glow::CLIP_DISTANCE0);
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.disable(glow::CLIP_DISTANCE1 + i);
+            }
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.bind_texture(glow::TEXTURE_2D, None);

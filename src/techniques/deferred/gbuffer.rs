@@ -113,11 +113,15 @@ impl RunPasses for GBufferPass {
             if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
+            // The scene's clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.enable(glow::CLIP_DISTANCE1 + i);
+            }
 
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            f.view.set_uniforms(p, f.uniforms.eye);
+            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             let mut depth_func = f.scene.render.depth_func;
             // Transparent objects are drawn later, sorted (blending/transparency.rs);
@@ -149,6 +153,9 @@ impl RunPasses for GBufferPass {
 
             gl.front_face(glow::CCW);
             gl.disable(glow::CLIP_DISTANCE0);
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.disable(glow::CLIP_DISTANCE1 + i);
+            }
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.disable(glow::FRAMEBUFFER_SRGB);

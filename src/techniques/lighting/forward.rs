@@ -156,6 +156,10 @@ impl RunPasses for Forward {
             if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
+            // The scene's clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.enable(glow::CLIP_DISTANCE1 + i);
+            }
 
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
@@ -164,7 +168,7 @@ impl RunPasses for Forward {
             p.set_i32("u_light_count", u.light_count);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            f.view.set_uniforms(p, f.uniforms.eye);
+            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             f.shadows.bind(gl);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
@@ -198,6 +202,9 @@ impl RunPasses for Forward {
 
             // Restore the state this pass changed.
             gl.disable(glow::CLIP_DISTANCE0);
+            for i in 0..f.scene.clip_planes.len() as u32 {
+                gl.disable(glow::CLIP_DISTANCE1 + i);
+            }
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);

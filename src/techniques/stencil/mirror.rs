@@ -368,7 +368,7 @@ impl Mirror {
             p.use_program();
             p.set_mat4("u_model", &d.model);
             p.set_mat4("u_view_projection", &u.view_projection);
-            f.view.set_uniforms(p, f.uniforms.eye);
+            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             p.set_vec3("u_color", color);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_bool("u_has_roughness", texture.is_some());

@@ -15,7 +15,7 @@ use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture};
 use crate::math;
 use crate::math::frustum::Frustum;
-use crate::scene::{Cull, DepthFunc, MeshSource, Scene};
+use crate::scene::{Cull, DepthFunc, MeshSource, Scene, Winding};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
 use std::cell::Cell;
@@ -29,8 +29,9 @@ pub struct DrawItem {
     pub material: usize,
     pub model: Mat4,
     pub normal_matrix: Mat3,
-    /// The model matrix mirrors (negative determinant): its triangles wind
-    /// clockwise on screen; `View::front_face` gives the pass its glFrontFace.
+    /// Its front faces wind clockwise on screen: the model matrix mirrors
+    /// (negative determinant), or, not both, the material's winding is
+    /// "cw" (notes 01 §3.4). `View::front_face` gives the pass its glFrontFace.
     pub mirrored: bool,
     pub diffuse: Vec3,
     pub specular: Vec3,
@@ -130,7 +131,8 @@ impl DrawList {
                 material: o.material,
                 model: o.model,
                 normal_matrix: normal_matrix(&o.model),
-                mirrored: Mat3::from_mat4(o.model).determinant() < 0.0,
+                mirrored: (Mat3::from_mat4(o.model).determinant() < 0.0)
+                    != (m.winding == Winding::Cw),
                 diffuse: m.diffuse,
                 specular: m.specular,
                 shininess: m.shininess,
@@ -192,7 +194,8 @@ impl DrawList {
         for (d, o) in self.items.iter_mut().zip(&scene.objects) {
             d.model = o.model;
             d.normal_matrix = normal_matrix(&o.model);
-            d.mirrored = Mat3::from_mat4(o.model).determinant() < 0.0;
+            d.mirrored = (Mat3::from_mat4(o.model).determinant() < 0.0)
+                != (scene.materials[d.material].winding == Winding::Cw);
             let m = &scene.materials[d.material];
             d.diffuse = m.diffuse;
             d.specular = m.specular;

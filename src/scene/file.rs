@@ -117,6 +117,7 @@ pub(super) struct RenderFile {
     /// Samples per pixel on the forward path (1: no MSAA).
     pub(super) msaa: u32,
     pub(super) frustum_culling: bool,
+    pub(super) wireframe: bool,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
 }
@@ -149,6 +150,7 @@ impl Default for RenderFile {
             post_chain: super::settings::ChainForm::PingPong,
             msaa: 1,
             frustum_culling: true,
+            wireframe: false,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
         }
@@ -243,6 +245,8 @@ pub(super) struct MaterialFile {
     /// front_and_back, none.
     #[serde(default)]
     pub(super) cull: Option<Cull>,
+    /// Which winding is a front face: "ccw" (the default) or "cw".
+    pub(super) winding: Option<super::settings::Winding>,
 }
 
 fn always() -> AlphaTest {

@@ -281,6 +281,19 @@ pub static FRUSTUM_CULLING: Knob = Knob {
     },
 };
 
+pub static WIREFRAME: Knob = Knob {
+    key: "render.wireframe",
+    label: "triangle edges only",
+    help: "the forward and G-buffer passes draw each triangle's edges (glPolygonMode(GL_LINE)): see where the near plane cuts the triangles",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.wireframe),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.wireframe = b;
+        }
+    },
+};
+
 pub static MSAA: Knob = Knob {
     key: "render.msaa",
     label: "MSAA samples",
@@ -318,6 +331,7 @@ pub static ALL: &[&Knob] = &[
     &SORT_TRANSPARENT,
     &SORT_OPAQUE,
     &FRUSTUM_CULLING,
+    &WIREFRAME,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,

@@ -47,7 +47,7 @@ pub use mirrors::{Mirror, flat};
 pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, Cull, DeferredLights, DepthFunc,
     Falloff, JointStorage, MirrorOrder, RenderPath, RenderSettings, Shading, SkinMethod,
-    SkinningOn,
+    SkinningOn, Winding,
 };
 pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;
@@ -149,6 +149,8 @@ pub struct Material {
     pub depth_func: Option<DepthFunc>,
     /// The faces its objects cull (notes 01 §3.4).
     pub cull: Cull,
+    /// Which winding its meshes' front faces have (notes 01 §3.4).
+    pub winding: Winding,
 }
 
 impl Material {

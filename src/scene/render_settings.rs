@@ -124,6 +124,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             r.msaa
         },
         frustum_culling: r.frustum_culling,
+        wireframe: r.wireframe,
         skinning_on: r.skinning_on,
         joint_storage: r.joint_storage,
     })

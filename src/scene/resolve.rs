@@ -116,6 +116,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         opacity: 1.0,
         depth_func: None,
         cull: super::Cull::Back,
+        winding: super::Winding::Ccw,
     }];
     let mut material_index = HashMap::new();
     for n in names {
@@ -176,6 +177,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             opacity: m.opacity,
             depth_func: m.depth_func,
             cull: m.cull.unwrap_or(super::Cull::Back),
+            winding: m.winding.unwrap_or(super::Winding::Ccw),
         });
     }
     Ok((materials, material_index))

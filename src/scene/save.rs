@@ -72,6 +72,10 @@ impl Scene {
                         Some(f) => t.insert("depth_func".into(), f.name().into()),
                         None => t.remove("depth_func"),
                     };
+                    match m.winding {
+                        crate::scene::Winding::Ccw => t.remove("winding"),
+                        w => t.insert("winding".into(), w.name().into()),
+                    };
                     match m.cull {
                         crate::scene::Cull::Back => t.remove("cull"),
                         c => t.insert("cull".into(), c.name().into()),

@@ -187,6 +187,20 @@ setting! {
     }
 }
 
+setting! {
+    /// Which winding is a front face, for a material's meshes (notes 01
+    /// §3.4: "front and back faces are determined by the winding order of
+    /// the vertices of triangles").
+    pub enum Winding {
+        /// Counter-clockwise on screen is the front (glFrontFace(GL_CCW)):
+        /// GL's default, and every mesh gloss makes.
+        Ccw = "ccw",
+        /// Clockwise is the front: a mesh from a tool that winds the other
+        /// way (and so do Direct3D's conventions).
+        Cw = "cw",
+    }
+}
+
 impl Cull {
     /// glCullFace's face, or None for glDisable(GL_CULL_FACE).
     pub fn gl(self) -> Option<u32> {
@@ -374,6 +388,9 @@ pub struct RenderSettings {
     pub msaa: u32,
     /// Draw only the opaque objects inside the view's frustum (notes 01 §6.3).
     pub frustum_culling: bool,
+    /// The forward and G-buffer passes draw triangles' edges only
+    /// (glPolygonMode(GL_FRONT_AND_BACK, GL_LINE)): where the clipper cut them.
+    pub wireframe: bool,
     /// Where skinned meshes are skinned: the GPU pass, or the CPU reference.
     pub skinning_on: SkinningOn,
     /// Where the skinning pass reads the joint matrices from.

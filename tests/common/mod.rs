@@ -115,6 +115,9 @@ pub fn gl_state(gl: &glow::Context) -> Vec<(String, i64)> {
         ] {
             v.push((name.to_string(), gl.is_enabled(cap) as i64));
         }
+        let mut polygon = [0i32; 2];
+        gl.get_parameter_i32_slice(glow::POLYGON_MODE, &mut polygon);
+        v.push(("POLYGON_MODE".to_string(), polygon[0] as i64));
         for (name, p) in [
             ("DEPTH_FUNC", glow::DEPTH_FUNC),
             (

@@ -7,7 +7,7 @@ use super::values::{number, vec3};
 use crate::assets;
 use crate::scene::{
     AlphaTest, BillboardFieldFile, BillboardFile, BillboardKind, Cull, DepthFunc, Material,
-    MeshSource, Object, Scene, SplitView,
+    MeshSource, Object, Scene, SplitView, Winding,
 };
 use glam::Vec3;
 use std::path::PathBuf;
@@ -37,7 +37,7 @@ fn choose(
 /// The name a mesh goes by in the panel.
 fn mesh_name(m: &MeshSource) -> String {
     match m {
-        MeshSource::Obj(p) => p.file_name().map_or_else(
+        MeshSource::Obj(p) | MeshSource::Gltf(p) => p.file_name().map_or_else(
             || p.display().to_string(),
             |n| n.to_string_lossy().into_owned(),
         ),
@@ -161,6 +161,15 @@ pub(super) fn material_tests(ui: &mut egui::Ui, i: usize, m: &mut Material) -> b
     let mut c = Cull::ALL.iter().position(|&x| x == m.cull).unwrap_or(0);
     if choose(ui, "cull faces", ("cull faces", i), &cull, &mut c) {
         m.cull = Cull::ALL[c];
+        changed = true;
+    }
+    let winding: Vec<String> = Winding::WORDS.iter().map(|w| w.to_string()).collect();
+    let mut k = Winding::ALL
+        .iter()
+        .position(|&x| x == m.winding)
+        .unwrap_or(0);
+    if choose(ui, "front faces wind", ("winding", i), &winding, &mut k) {
+        m.winding = Winding::ALL[k];
         changed = true;
     }
     changed

@@ -51,6 +51,7 @@ pub const FORWARD: Technique = Technique {
     docs: "docs/lighting/forward.md",
     knobs: &[
         &knobs::SHADING,
+        &knobs::WIREFRAME,
         &knobs::DEPTH_FUNC,
         &knobs::AMBIENT,
         &knobs::BACKGROUND,
@@ -156,6 +157,10 @@ impl RunPasses for Forward {
             if f.view.clips() {
                 gl.enable(glow::CLIP_DISTANCE0);
             }
+            // Edges only (notes 01 §3.3-3.4: what the clipper makes of each triangle).
+            if f.scene.render.wireframe {
+                gl.polygon_mode(glow::FRONT_AND_BACK, glow::LINE);
+            }
             // The scene's clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
             for i in 0..f.scene.clip_planes.len() as u32 {
                 gl.enable(glow::CLIP_DISTANCE1 + i);
@@ -201,6 +206,7 @@ impl RunPasses for Forward {
             }
 
             // Restore the state this pass changed.
+            gl.polygon_mode(glow::FRONT_AND_BACK, glow::FILL);
             gl.disable(glow::CLIP_DISTANCE0);
             for i in 0..f.scene.clip_planes.len() as u32 {
                 gl.disable(glow::CLIP_DISTANCE1 + i);

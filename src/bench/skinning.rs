@@ -116,7 +116,7 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless) -> Result<()> 
                     pose_ms: Stats::from_samples(&mut pose_ms).median,
                     pass_ms: Stats::from_samples(&mut pass_ms).median,
                     frame_ms: Stats::from_samples(&mut frame_ms).median,
-                    error: max_error(ctx, &r),
+                    error: max_error(&r),
                 });
             }
         }
@@ -128,29 +128,14 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless) -> Result<()> 
 
 /// The largest distance between a skinned vertex in the GPU's buffers and
 /// the CPU reference's, for the renderer's last pose.
-fn max_error(ctx: &Headless, r: &Renderer) -> f32 {
+fn max_error(r: &Renderer) -> f32 {
     let draws = r.draws();
     let mut worst = 0f32;
     for s in &draws.skins {
-        let mesh = &draws.meshes[draws.items[s.item].mesh];
-        let mut bytes = vec![0u8; mesh.vertex_count as usize * 32];
-        unsafe {
-            ctx.gl
-                .bind_buffer(glow::ARRAY_BUFFER, Some(mesh.vertex_buffer()));
-            ctx.gl
-                .get_buffer_sub_data(glow::ARRAY_BUFFER, 0, &mut bytes);
-            ctx.gl.bind_buffer(glow::ARRAY_BUFFER, None);
-        }
+        let gpu = draws.meshes[draws.items[s.item].mesh].read_vertices();
         let cpu = (s.skin.mesh).skinned(&s.joints, s.skin.method == SkinMethod::DualQuaternion);
-        for (i, v) in cpu.vertices.iter().enumerate() {
-            let at = |k: usize| {
-                f32::from_le_bytes(
-                    bytes[32 * i + 4 * k..32 * i + 4 * k + 4]
-                        .try_into()
-                        .unwrap(),
-                )
-            };
-            let g = glam::Vec3::new(at(0), at(1), at(2));
+        for (g, v) in gpu.iter().zip(&cpu.vertices) {
+            let g = glam::Vec3::new(g[0], g[1], g[2]);
             worst = worst.max((g - glam::Vec3::from(v.position)).length());
         }
     }

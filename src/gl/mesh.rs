@@ -60,6 +60,24 @@ impl Mesh {
         }
     }
 
+    /// The vertices as the VBO holds them now (glGetBufferSubData), each
+    /// position, normal, uv: what transform feedback wrote into a skinned
+    /// mesh (the tests and `gloss bench --skinning` compare it with the CPU's).
+    pub fn read_vertices(&self) -> Vec<[f32; 8]> {
+        let mut bytes = vec![0u8; self.vertex_count as usize * 32];
+        unsafe {
+            self.gl.bind_buffer(glow::ARRAY_BUFFER, Some(self.vbo));
+            self.gl
+                .get_buffer_sub_data(glow::ARRAY_BUFFER, 0, &mut bytes);
+            self.gl.bind_buffer(glow::ARRAY_BUFFER, None);
+        }
+        (bytes.chunks_exact(32))
+            .map(|v| {
+                std::array::from_fn(|k| f32::from_le_bytes(v[4 * k..4 * k + 4].try_into().unwrap()))
+            })
+            .collect()
+    }
+
     fn upload_as(gl: &Gl, data: &MeshData, usage: u32) -> Result<Mesh> {
         if data.indices.is_empty() {
             bail!("mesh has no triangles");

@@ -10,7 +10,6 @@ use gloss::image_compare::{Tolerance, compare_rgba8};
 use gloss::math::skinning::uniform_joint_limit;
 use gloss::renderer::{Output, render_scene};
 use gloss::scene::{JointStorage, RenderPath, Scene, SkinMethod, SkinningOn};
-use glow::HasContext;
 use std::path::Path;
 
 fn scene(f: impl FnOnce(&mut Scene)) -> Scene {
@@ -29,18 +28,9 @@ fn the_gpu_skins_every_vertex_as_the_cpu_reference_does() {
     assert_eq!(draws.skins.len(), 3);
     let mut methods = Vec::new();
     for sd in &draws.skins {
-        let mesh = &draws.meshes[draws.items[sd.item].mesh];
-        let mut bytes = vec![0u8; mesh.vertex_count as usize * 32];
-        unsafe {
-            ctx.gl
-                .bind_buffer(glow::ARRAY_BUFFER, Some(mesh.vertex_buffer()));
-            ctx.gl
-                .get_buffer_sub_data(glow::ARRAY_BUFFER, 0, &mut bytes);
-            ctx.gl.bind_buffer(glow::ARRAY_BUFFER, None);
-        }
-        let gpu: Vec<f32> = (bytes.chunks(4))
-            .map(|b| f32::from_le_bytes(b.try_into().unwrap()))
-            .collect();
+        let gpu: Vec<f32> = draws.meshes[draws.items[sd.item].mesh]
+            .read_vertices()
+            .concat();
         let dual = sd.skin.method == SkinMethod::DualQuaternion;
         let cpu = sd.skin.mesh.skinned(&sd.joints, dual);
         let (mut dp, mut dn) = (0f32, 0f32);

@@ -272,3 +272,60 @@ fn bench_measures_skinning_on_the_gpu_against_the_cpu() {
         assert!(error < 1e-5, "{r}");
     }
 }
+
+#[test]
+fn a_skeleton_past_the_uniform_limit_reads_the_buffer_texture() {
+    // The arm with 1100 joints more than it uses (each the wrist again,
+    // weight 0 everywhere): past llvmpipe's 1020 uniform matrices, and
+    // past GL 3.3's minimum of 60.
+    let dir = std::env::temp_dir().join(format!("gloss-joints-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (mut skin, _) =
+        gloss::geometry::load_gltf(&common::root().join("scenes/assets/arm.glb")).unwrap();
+    for _ in 0..1100 {
+        skin.joint_nodes.push(3);
+        skin.inverse_bind.push(skin.inverse_bind[2]);
+    }
+    std::fs::write(dir.join("big.glb"), gloss::geometry::write_glb(&skin)).unwrap();
+    std::fs::copy(
+        common::root().join("scenes/assets/arm.glb"),
+        dir.join("arm.glb"),
+    )
+    .unwrap();
+    let scene = |mesh: &str| {
+        format!(
+            "name = \"t\"\n[camera]\neye = [1.5, 1.0, 5.0]\ntarget = [1.5, 0.0, 0.0]\n[render]\nsize = [96, 54]\n\
+             [[lights]]\ntype = \"directional\"\ndirection = [0.0, -1.0, -1.0]\n\
+             [[objects]]\nmesh = \"{mesh}\"\nclip = \"twist\"\n[animation]\ntime = 1.5\n"
+        )
+    };
+    let run = |name: &str, mesh: &str| {
+        std::fs::write(dir.join(format!("{name}.toml")), scene(mesh)).unwrap();
+        let out = dir.join(format!("{name}.png"));
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+            .args(["render", "--debug"])
+            .arg(dir.join(format!("{name}.toml")))
+            .arg("-o")
+            .arg(&out)
+            .env("MESA_GL_VERSION_OVERRIDE", "3.3")
+            .env("MESA_GLSL_VERSION_OVERRIDE", "330")
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&o.stderr).into_owned();
+        assert!(o.status.success(), "{stderr}");
+        (image::open(&out).unwrap().to_rgba8(), stderr)
+    };
+    let (small, said_small) = run("small", "arm.glb");
+    let (big, said_big) = run("big", "big.glb");
+    assert!(
+        said_small.contains("0 of 1 meshes read the texture"),
+        "{said_small}"
+    );
+    assert!(
+        said_big.contains("up to 1103 joints")
+            && said_big.contains("1 of 1 meshes read the texture"),
+        "{said_big}"
+    );
+    assert!(small == big, "the same pose, read from the texture");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -143,9 +143,13 @@ impl RunPasses for SkinnedMeshes {
                 .map(|s| s.joints.len())
                 .max()
                 .unwrap_or(0);
+            let textured = (f.draws.skins.iter())
+                .filter(|s| self.in_texture(storage, s))
+                .count();
             eprintln!(
-                "skinning: up to {most} joints a mesh; this GL holds {} joint matrices in a uniform array (GL_MAX_VERTEX_UNIFORM_COMPONENTS), more go in a buffer texture",
-                self.max_uniform_joints
+                "skinning: up to {most} joints a mesh; this GL holds {} joint matrices in a uniform array (GL_MAX_VERTEX_UNIFORM_COMPONENTS), more go in a buffer texture: {textured} of {} meshes read the texture",
+                self.max_uniform_joints,
+                f.draws.skins.len()
             );
             if storage == JointStorage::Uniforms && most > self.max_uniform_joints {
                 eprintln!(

@@ -254,6 +254,15 @@ impl DrawList {
         order
     }
 
+    /// Which objects (perhaps partly) lie inside the frustum of the
+    /// view-projection matrix `vp` (notes 01 §6.3).
+    pub fn in_view(&self, vp: &Mat4) -> Vec<bool> {
+        let all = vec![true; self.items.len()];
+        self.cull_tree
+            .visible(&Frustum::from_view_projection(vp), &all)
+            .0
+    }
+
     pub fn mesh(&self, d: &DrawItem) -> &Mesh {
         &self.meshes[d.mesh]
     }

@@ -141,8 +141,7 @@ impl Frame<'_> {
     pub fn opaque_order(&self) -> Vec<usize> {
         let view = self.uniforms.view * self.view.reflection;
         let settings = &self.scene.render;
-        let cull = (settings.frustum_culling && self.view.curved.is_none())
-            .then(|| self.uniforms.projection * view);
+        let cull = self.cull_matrix();
         // The counts the demo shows are the camera's: a reflection's or a
         // split view's walk leaves them as they were.
         let camera = self.view.reflection == glam::Mat4::IDENTITY && self.view.camera.is_none();
@@ -152,6 +151,20 @@ impl Frame<'_> {
             self.draws.last_cull.set(before);
         }
         order
+    }
+
+    /// Which objects reach into this view's frustum (None: every object,
+    /// when culling is off or the view is a convex mirror's): the
+    /// transparency pass culls with it.
+    pub fn in_view(&self) -> Option<Vec<bool>> {
+        self.cull_matrix().map(|vp| self.draws.in_view(&vp))
+    }
+
+    /// The view-projection matrix this view culls with, if it culls.
+    fn cull_matrix(&self) -> Option<glam::Mat4> {
+        let view = self.uniforms.view * self.view.reflection;
+        (self.scene.render.frustum_culling && self.view.curved.is_none())
+            .then(|| self.uniforms.projection * view)
     }
 }
 

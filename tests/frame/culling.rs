@@ -113,3 +113,21 @@ fn object_fields_that_cannot_be_made_are_refused() {
     let e = field("count = 1\narea = [0.0, 1.0, 0.0, 1.0]\nheight = 3.0");
     assert!(e.contains("unknown field `height`"), "{e}");
 }
+
+#[test]
+fn the_transparency_pass_draws_only_what_is_in_view() {
+    // A pane behind the camera and one in front: culled or not, the image
+    // is the same, and the walk marks only the one in front.
+    let s = scene(
+        "[materials.glass]\nopacity = 0.5\n\
+         [[objects]]\nname = \"behind\"\nmesh = \"cube\"\nmaterial = \"glass\"\nposition = [0.0, 0.0, 20.0]\n\
+         [[objects]]\nname = \"front\"\nmesh = \"cube\"\nmaterial = \"glass\"\n",
+    );
+    let ctx = common::context(common::backend());
+    let r = render_scene(&ctx, &s, Output::Srgb8).unwrap();
+    let vp = s.camera.projection(s.aspect()) * s.camera.view();
+    assert_eq!(r.draws().in_view(&vp), [false, true]);
+    let mut off = s.clone();
+    off.render.frustum_culling = false;
+    assert!(r.read_image() == common::render_with(&ctx, &off, Output::Srgb8).image);
+}

@@ -118,9 +118,11 @@ impl RunPasses for Transparency {
     fn run(&self, _: &Pass, f: &Frame) {
         let (gl, p, u) = (f.gl, &self.program, f.uniforms);
         let output = f.targets.get(world_target(f.scene));
-        // 1. The transparent list, 3. sorted (or not, to show why it must be).
+        // 1. The transparent list (those in the view's frustum, notes 01
+        // §6.3), 3. sorted (or not, to show why it must be).
+        let seen = f.in_view();
         let items: Vec<usize> = (0..f.draws.items.len())
-            .filter(|&i| f.draws.items[i].transparent)
+            .filter(|&i| f.draws.items[i].transparent && seen.as_ref().is_none_or(|s| s[i]))
             .collect();
         let order: Vec<usize> = if f.scene.render.sort_transparent {
             let centres: Vec<Vec3> = items

@@ -75,7 +75,8 @@ pub struct DrawList {
     /// (src/frame/culling.rs), and each object's parent.
     cull_tree: CullTree,
     parents: Vec<Option<usize>>,
-    /// What the last culled `opaque_order` did (the demo and the bench show it).
+    /// What the camera's last culled walk did (`Frame::opaque_order` sets
+    /// it; the demo and the bench show it).
     pub last_cull: Cell<CullStats>,
 }
 
@@ -229,20 +230,11 @@ impl DrawList {
     /// `view` when `sorted` (notes 01 §6.2: the depth test then rejects
     /// hidden fragments before they are shaded), else in the scene's order.
     /// A big object's centre says little about its nearest point: a floor
-    /// under everything sorts by its middle. With `cull` (a view-projection
-    /// matrix), only the objects inside its frustum (notes 01 §6.3).
-    pub fn opaque_order(&self, view: &Mat4, cull: Option<&Mat4>, sorted: bool) -> Vec<usize> {
-        let wanted: Vec<bool> = (self.items.iter())
-            .map(|d| !d.transparent && !d.mirror)
-            .collect();
-        let seen = cull.map(|vp| {
-            let (seen, stats) =
-                (self.cull_tree).visible(&Frustum::from_view_projection(vp), &wanted);
-            self.last_cull.set(stats);
-            seen
-        });
+    /// under everything sorts by its middle. With `seen` (from `in_view`),
+    /// only the objects inside the view's frustum (notes 01 §6.3).
+    pub fn opaque_order(&self, view: &Mat4, seen: Option<&[bool]>, sorted: bool) -> Vec<usize> {
         let mut order: Vec<usize> = (0..self.items.len())
-            .filter(|&i| wanted[i] && seen.as_ref().is_none_or(|s| s[i]))
+            .filter(|&i| self.is_opaque_world(i) && seen.is_none_or(|s| s[i]))
             .collect();
         if sorted {
             let depth = |i: usize| {
@@ -255,12 +247,18 @@ impl DrawList {
     }
 
     /// Which objects (perhaps partly) lie inside the frustum of the
-    /// view-projection matrix `vp` (notes 01 §6.3).
-    pub fn in_view(&self, vp: &Mat4) -> Vec<bool> {
-        let all = vec![true; self.items.len()];
-        self.cull_tree
-            .visible(&Frustum::from_view_projection(vp), &all)
-            .0
+    /// view-projection matrix `vp` (notes 01 §6.3), and what the walk did
+    /// over the opaque ones the world passes draw.
+    pub fn in_view(&self, vp: &Mat4) -> (Vec<bool>, CullStats) {
+        let wanted: Vec<bool> = (0..self.items.len())
+            .map(|i| self.is_opaque_world(i))
+            .collect();
+        (self.cull_tree).visible(&Frustum::from_view_projection(vp), &wanted)
+    }
+
+    /// Drawn by the opaque world passes: not transparent, not a mirror.
+    fn is_opaque_world(&self, i: usize) -> bool {
+        !self.items[i].transparent && !self.items[i].mirror
     }
 
     pub fn mesh(&self, d: &DrawItem) -> &Mesh {

@@ -140,31 +140,30 @@ impl Frame<'_> {
     /// moves each vertex on its own, so it culls nothing.
     pub fn opaque_order(&self) -> Vec<usize> {
         let view = self.uniforms.view * self.view.reflection;
-        let settings = &self.scene.render;
-        let cull = self.cull_matrix();
-        // The counts the demo shows are the camera's: a reflection's or a
-        // split view's walk leaves them as they were.
+        // The counts the demo shows are the camera's, not a reflection's
+        // or a split view's.
         let camera = self.view.reflection == glam::Mat4::IDENTITY && self.view.camera.is_none();
-        let before = self.draws.last_cull.get();
-        let order = (self.draws).opaque_order(&view, cull.as_ref(), settings.sort_opaque);
-        if !camera {
-            self.draws.last_cull.set(before);
-        }
-        order
+        let seen = self.in_view_stats().map(|(seen, stats)| {
+            if camera {
+                self.draws.last_cull.set(stats);
+            }
+            seen
+        });
+        (self.draws).opaque_order(&view, seen.as_deref(), self.scene.render.sort_opaque)
     }
 
     /// Which objects reach into this view's frustum (None: every object,
     /// when culling is off or the view is a convex mirror's): the
     /// transparency pass culls with it.
     pub fn in_view(&self) -> Option<Vec<bool>> {
-        self.cull_matrix().map(|vp| self.draws.in_view(&vp))
+        self.in_view_stats().map(|(seen, _)| seen)
     }
 
-    /// The view-projection matrix this view culls with, if it culls.
-    fn cull_matrix(&self) -> Option<glam::Mat4> {
-        let view = self.uniforms.view * self.view.reflection;
+    /// `in_view`, with what the walk did.
+    fn in_view_stats(&self) -> Option<(Vec<bool>, crate::frame::culling::CullStats)> {
+        let vp = self.uniforms.projection * self.uniforms.view * self.view.reflection;
         (self.scene.render.frustum_culling && self.view.curved.is_none())
-            .then(|| self.uniforms.projection * view)
+            .then(|| self.draws.in_view(&vp))
     }
 }
 

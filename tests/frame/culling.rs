@@ -126,7 +126,7 @@ fn the_transparency_pass_draws_only_what_is_in_view() {
     let ctx = common::context(common::backend());
     let r = render_scene(&ctx, &s, Output::Srgb8).unwrap();
     let vp = s.camera.projection(s.aspect()) * s.camera.view();
-    assert_eq!(r.draws().in_view(&vp), [false, true]);
+    assert_eq!(r.draws().in_view(&vp).0, [false, true]);
     let mut off = s.clone();
     off.render.frustum_culling = false;
     assert!(r.read_image() == common::render_with(&ctx, &off, Output::Srgb8).image);

@@ -77,11 +77,7 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless) -> Result<()> 
                     }
                     pack_ms.push(packing);
                     frame_ms.push(r.last_times.frame_ms);
-                    let pass = (r.last_times.passes.iter())
-                        .filter(|(n, _)| *n == "particles")
-                        .map(|(_, ms)| ms)
-                        .sum::<f64>();
-                    pass_ms.push(pass);
+                    pass_ms.push(r.last_times.pass_ms("particles"));
                 }
                 rows.push(Row {
                     count: alive.len(),

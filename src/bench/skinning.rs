@@ -98,11 +98,7 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless) -> Result<()> 
                     }
                     pose_ms.push(posing);
                     frame_ms.push(r.last_times.frame_ms);
-                    let pass = (r.last_times.passes.iter())
-                        .filter(|(n, _)| *n == "skinning")
-                        .map(|(_, ms)| ms)
-                        .sum::<f64>();
-                    pass_ms.push(pass);
+                    pass_ms.push(r.last_times.pass_ms("skinning"));
                 }
                 let joints: usize = (r.draws().skins.iter()).map(|d| d.joints.len()).sum();
                 rows.push(Row {

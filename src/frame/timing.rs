@@ -21,6 +21,16 @@ pub struct PassTimes {
     pub culling: Option<crate::frame::culling::CullStats>,
 }
 
+impl PassTimes {
+    /// The CPU-clock time of the passes named `name`, added up (ms).
+    pub fn pass_ms(&self, name: &str) -> f64 {
+        (self.passes.iter())
+            .filter(|(n, _)| *n == name)
+            .map(|(_, ms)| ms)
+            .sum()
+    }
+}
+
 /// Does this renderer's timer-query clock tell the truth? Not on Mesa's
 /// software rasterisers.
 pub fn timer_queries_trustworthy(renderer: &str) -> bool {

@@ -11,7 +11,7 @@
 
 in vec3 v_position;
 in vec3 v_normal;
-in vec2 v_uv;
+#include "common/texcoord_in.glsl"
 
 uniform int u_light_count;
 uniform vec3 u_eye;
@@ -21,11 +21,12 @@ uniform float u_opacity;
 out vec4 frag_color;
 
 void main() {
+    vec2 uv = surface_uv();
     vec3 N = safe_normal(v_normal, v_position);
     // A back face (the far wall of a glass sphere) faces the eye from inside.
     if (!gl_FrontFacing) N = -N;
     vec3 V = normalize(u_eye - v_position);
-    vec3 kd = material_diffuse(v_uv);
+    vec3 kd = material_diffuse(uv);
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
         if (casts_shadow(i)) continue;   // in the loop below

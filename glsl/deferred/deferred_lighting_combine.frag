@@ -7,7 +7,7 @@
 #include "common/lighting_output.glsl"
 in vec3 v_position;
 in vec3 v_normal;
-in vec2 v_uv;
+#include "common/texcoord_in.glsl"
 uniform sampler2D u_diffuse_light;    // unit::LIGHT
 uniform sampler2D u_specular_light;   // unit::SPECULAR_LIGHT
 uniform bool u_has_light;             // false: no lights, no light pre-pass ran
@@ -15,12 +15,13 @@ uniform vec3 u_ambient;
 out vec4 frag_color;
 
 void main() {
-    alpha_test(material_alpha(v_uv));
+    vec2 uv = surface_uv();
+    alpha_test(material_alpha(uv));
     vec3 D = vec3(0.0), S = vec3(0.0);
     if (u_has_light) {
-        vec2 uv = gl_FragCoord.xy / textureSize(u_diffuse_light, 0).xy;
-        D = texture(u_diffuse_light, uv).rgb;
-        S = texture(u_specular_light, uv).rgb;
+        vec2 pixel = gl_FragCoord.xy / textureSize(u_diffuse_light, 0).xy;
+        D = texture(u_diffuse_light, pixel).rgb;
+        S = texture(u_specular_light, pixel).rgb;
     }
-    frag_color = output_color(material_diffuse(v_uv) * (u_ambient + D) + u_specular * S);
+    frag_color = output_color(material_diffuse(uv) * (u_ambient + D) + u_specular * S);
 }

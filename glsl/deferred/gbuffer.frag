@@ -9,15 +9,16 @@
 #include "common/alpha_test.glsl"
 in vec3 v_position;
 in vec3 v_normal;
-in vec2 v_uv;
+#include "common/texcoord_in.glsl"
 
 layout(location = 0) out vec4 g_normal_shininess;
 layout(location = 1) out vec4 g_albedo;
 layout(location = 2) out vec4 g_specular;
 
 void main() {
-    alpha_test(material_alpha(v_uv));
+    vec2 uv = surface_uv();
+    alpha_test(material_alpha(uv));
     g_normal_shininess = vec4(safe_normal(v_normal, v_position), u_shininess);
-    g_albedo = vec4(material_diffuse(v_uv), 1.0);
+    g_albedo = vec4(material_diffuse(uv), 1.0);
     g_specular = vec4(u_specular, 1.0);
 }

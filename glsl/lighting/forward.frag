@@ -9,7 +9,7 @@
 
 in vec3 v_position;
 in vec3 v_normal;
-in vec2 v_uv;
+#include "common/texcoord_in.glsl"
 
 uniform int u_light_count;
 uniform vec3 u_eye;
@@ -18,10 +18,11 @@ uniform vec3 u_ambient;
 out vec4 frag_color;
 
 void main() {
-    alpha_test(material_alpha(v_uv));
+    vec2 uv = surface_uv();
+    alpha_test(material_alpha(uv));
     vec3 N = safe_normal(v_normal, v_position);
     vec3 V = normalize(u_eye - v_position);
-    vec3 kd = material_diffuse(v_uv);
+    vec3 kd = material_diffuse(uv);
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
         if (casts_shadow(i)) continue;   // in the loop below

@@ -13,13 +13,13 @@ uniform mat3 u_normal_matrix;
 // The view drawn for: a mirror's clip plane, or a curved mirror's
 // reflection of each vertex (common/view.glsl).
 #include "common/view.glsl"
+#include "common/texcoord.glsl"
 uniform int u_light_count;
 uniform vec3 u_eye;
 uniform float u_shininess;
 
 out vec3 v_diffuse_light;
 out vec3 v_specular_light;
-out vec2 v_uv;
 
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
@@ -34,7 +34,7 @@ void main() {
         v_diffuse_light += d;
         v_specular_light += s;
     }
-    v_uv = a_uv;
+    write_texcoord(a_uv);
     gl_Position = u_view_projection * view_position(world);
     write_clip_distances(world);
 }

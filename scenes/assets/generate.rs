@@ -1,6 +1,10 @@
 //! Writes the small committed assets next to this file:
 //!
 //! * `checker.png`: 256x256 sRGB albedo checkerboard (8x8 squares);
+//! * `uv-ramp.png`: 64x64, red rising with u and green with v (4 levels a
+//!   texel), blue lines every 8 texels: shows what wrap rules do with
+//!   coordinates outside [0, 1] (repeat: a sawtooth, mirror: a triangle,
+//!   clamp: flat);
 //! * `bricks.png`: 256x256 procedural brick albedo (running bond, mortar);
 //! * `ripples.png`: 256x256 linear greyscale ripples, 0.55 to 1, that roughen
 //!   a mirror's reflection (a lake's surface);
@@ -33,6 +37,7 @@ mod arm;
 fn main() -> Result<()> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/assets");
     write_png(&dir.join("checker.png"), checker())?;
+    write_png(&dir.join("uv-ramp.png"), uv_ramp())?;
     write_png(&dir.join("bricks.png"), bricks())?;
     write_png(&dir.join("ripples.png"), ripples())?;
     write_rgba_png(&dir.join("tree.png"), tree())?;
@@ -183,6 +188,18 @@ fn checker() -> image::RgbImage {
         } else {
             teal
         })
+    })
+}
+
+fn uv_ramp() -> image::RgbImage {
+    // Image row 0 is the top: v = 1 (the loader flips it for GL).
+    image::RgbImage::from_fn(64, 64, |x, y| {
+        let line = x % 8 == 0 || y % 8 == 7;
+        image::Rgb([
+            (4 * x + 2) as u8,
+            (4 * (63 - y) + 2) as u8,
+            if line { 255 } else { 40 },
+        ])
     })
 }
 

@@ -8,6 +8,7 @@
 use crate::frame::billboards::BillboardDraws;
 use crate::frame::culling::{CullStats, CullTree};
 use crate::frame::skins::SkinDraw;
+use crate::frame::texturing::TextureSamplers;
 use crate::geometry::MeshData;
 use crate::gl::Gl;
 use crate::gl::mesh::Mesh;
@@ -15,7 +16,8 @@ use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture};
 use crate::math;
 use crate::math::frustum::Frustum;
-use crate::scene::{Cull, DepthFunc, MeshSource, Scene, Winding};
+use crate::scene::texturing::Texturing;
+use crate::scene::{Cull, DepthFunc, MeshSource, RenderSettings, Scene, Winding};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
 use std::cell::Cell;
@@ -37,6 +39,8 @@ pub struct DrawItem {
     pub specular: Vec3,
     pub shininess: f32,
     pub texture: Option<usize>,
+    /// How the texture is sampled, and the uv transform (notes 01 §5).
+    pub texturing: Texturing,
     /// The object is a mirror: the mirror technique draws it (stencil/mirror.rs),
     /// the passes that draw the world skip it.
     pub mirror: bool,
@@ -65,6 +69,8 @@ pub struct DrawList {
     pub items: Vec<DrawItem>,
     pub meshes: Vec<Mesh>,
     pub textures: Vec<Texture>,
+    /// The materials' sampler objects and the mip-colour twins (src/frame/texturing.rs).
+    pub samplers: TextureSamplers,
     /// Each mesh's axis-aligned box in its own space (lo, hi).
     pub bounds: Vec<(Vec3, Vec3)>,
     /// The scene's billboards (src/frame/billboards.rs).
@@ -138,6 +144,7 @@ impl DrawList {
                 specular: m.specular,
                 shininess: m.shininess,
                 texture,
+                texturing: m.texturing,
                 mirror: o.mirror.is_some(),
                 roughness,
                 alpha_test: m.alpha_test.code(),
@@ -150,10 +157,18 @@ impl DrawList {
                 skin: o.skin.as_ref().map(|_| skins.len() - 1),
             });
         }
+        let textured: Vec<Texturing> = scene
+            .materials
+            .iter()
+            .filter(|m| m.diffuse_texture.is_some())
+            .map(|m| m.texturing)
+            .collect();
+        let samplers = TextureSamplers::new(gl, &textured, &textures)?;
         let mut list = DrawList {
             items,
             meshes,
             textures,
+            samplers,
             bounds,
             billboards: BillboardDraws::new(gl, scene)?,
             skins,
@@ -265,9 +280,22 @@ impl DrawList {
         &self.meshes[d.mesh]
     }
 
-    /// The object's diffuse texture, if its material has one.
-    pub fn texture(&self, d: &DrawItem) -> Option<glow::Texture> {
-        d.texture.map(|t| self.textures[t].id)
+    /// The object's diffuse texture, if its material has one; with
+    /// `render.mip_colors`, the twin of its size whose levels are colours.
+    pub fn texture(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Texture> {
+        let t = &self.textures[d.texture?];
+        if r.mip_colors {
+            self.samplers.twin(t)
+        } else {
+            Some(t.id)
+        }
+    }
+
+    /// The sampler object the object's texture is read with under `r`
+    /// (glBindSampler on the diffuse texture's unit).
+    pub fn sampler(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Sampler> {
+        d.texture?;
+        self.samplers.sampler(&d.texturing, r)
     }
 
     /// glUniform* for one object's transform and material (program `p` in use).
@@ -279,6 +307,11 @@ impl DrawList {
         p.set_vec3("u_specular", d.specular);
         p.set_f32("u_shininess", d.shininess);
         p.set_bool("u_has_diffuse_texture", d.texture.is_some());
+        let (scale, offset) = (d.texturing.uv_scale, d.texturing.uv_offset);
+        p.set_vec4(
+            "u_uv_transform",
+            glam::Vec4::new(scale[0], scale[1], offset[0], offset[1]),
+        );
         p.set_i32("u_alpha_test", d.alpha_test);
         p.set_f32("u_alpha_ref", d.alpha_ref);
     }

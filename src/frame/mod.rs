@@ -35,6 +35,7 @@ pub mod shadows;
 pub mod skins;
 pub mod targets;
 pub mod technique;
+pub mod texturing;
 pub mod timing;
 pub mod uniforms;
 pub mod views;

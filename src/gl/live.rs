@@ -13,19 +13,21 @@ pub enum Kind {
     VertexArray,
     Buffer,
     Query,
+    Sampler,
 }
 
-const KINDS: [(Kind, &str); 6] = [
+const KINDS: [(Kind, &str); 7] = [
     (Kind::Program, "programs"),
     (Kind::Texture, "textures"),
     (Kind::Framebuffer, "framebuffers"),
     (Kind::VertexArray, "vertex arrays"),
     (Kind::Buffer, "buffers"),
     (Kind::Query, "queries"),
+    (Kind::Sampler, "samplers"),
 ];
 
 thread_local! {
-    static LIVE: [Cell<i64>; 6] = const { [const { Cell::new(0) }; 6] };
+    static LIVE: [Cell<i64>; 7] = const { [const { Cell::new(0) }; 7] };
 }
 
 fn slot(k: Kind) -> usize {

@@ -9,12 +9,14 @@ pub mod debug;
 pub mod depth_map;
 pub mod egl;
 pub mod framebuffer;
+pub mod image_file;
 pub mod live;
 pub mod mesh;
 pub mod mip_target;
 pub mod osmesa;
 pub mod program;
 pub mod query;
+pub mod sampler;
 pub mod skin_vertices;
 pub mod stream;
 pub mod texture;
@@ -69,6 +71,8 @@ pub struct GlInfo {
     /// GL_MAX_VERTEX_UNIFORM_COMPONENTS: what limits a skeleton's joints
     /// in a uniform array (16 a matrix).
     pub max_vertex_uniform_components: i32,
+    /// GL_MAX_TEXTURE_MAX_ANISOTROPY (1: no anisotropic filtering).
+    pub max_anisotropy: f32,
 }
 
 impl GlInfo {
@@ -94,6 +98,7 @@ impl GlInfo {
                 max_clip_distances: gl.get_parameter_i32(glow::MAX_CLIP_DISTANCES),
                 max_vertex_uniform_components: gl
                     .get_parameter_i32(glow::MAX_VERTEX_UNIFORM_COMPONENTS),
+                max_anisotropy: sampler::max_anisotropy(gl),
             }
         }
     }
@@ -156,11 +161,21 @@ impl std::fmt::Display for GlInfo {
             "clip distances {} (one for mirrors, the rest for a scene's clip planes)",
             self.max_clip_distances
         )?;
-        write!(
+        writeln!(
             f,
             "vertex uniform components {} (skinning: {} joint matrices in a uniform array)",
             self.max_vertex_uniform_components,
             crate::math::skinning::uniform_joint_limit(self.max_vertex_uniform_components)
+        )?;
+        write!(
+            f,
+            "max anisotropy {}{}",
+            self.max_anisotropy,
+            if self.max_anisotropy > 1.0 {
+                ""
+            } else {
+                " (no anisotropic filtering: \"anisotropic\" is trilinear)"
+            }
         )
     }
 }

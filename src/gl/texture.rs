@@ -1,14 +1,11 @@
 //! 2D textures: loaded from PNG (sRGB or linear), or empty render targets.
 
 use super::Gl;
-use crate::assets;
-use anyhow::{Context as _, Result, anyhow, bail};
+use anyhow::{Result, anyhow, bail};
 use glow::{HasContext, PixelUnpackData};
 use std::path::Path;
 
-/// Largest texture side gloss will load from a file (an absurd PNG is refused
-/// before it is decoded into memory).
-pub const MAX_TEXTURE_SIDE: u32 = 8192;
+pub use super::image_file::{MAX_TEXTURE_SIDE, load_rgba8};
 
 /// Wrap and filter settings (glTexParameteri), set when the texture is made.
 #[derive(Clone, Copy, Debug)]
@@ -203,6 +200,27 @@ impl Texture {
         let img = load_rgba8(path)?;
         Texture::from_rgba8(gl, img.width(), img.height(), img.as_raw(), srgb, sampling)
     }
+
+    /// Replace mip level `level` (`width` x `height`, RGBA8) with glTexImage2D.
+    pub fn upload_level(&self, level: u32, width: i32, height: i32, pixels: &[u8]) {
+        unsafe {
+            self.gl.bind_texture(glow::TEXTURE_2D, Some(self.id));
+            self.gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+            self.gl.tex_image_2d(
+                glow::TEXTURE_2D,
+                level as i32,
+                self.internal_format as i32,
+                width,
+                height,
+                0,
+                glow::RGBA,
+                glow::UNSIGNED_BYTE,
+                PixelUnpackData::Slice(Some(pixels)),
+            );
+            self.gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 4);
+            self.gl.bind_texture(glow::TEXTURE_2D, None);
+        }
+    }
 }
 
 impl Texture {
@@ -310,50 +328,6 @@ pub fn max_level(width: i32, height: i32) -> u32 {
     let side = width.max(height).max(1) as u32;
     31 - side.leading_zeros()
 }
-
-/// Decode an image file to RGBA8 with v flipped for GL, refusing absurd sizes
-/// before decoding.
-pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
-    // What is there, from its metadata alone: a FIFO is never opened.
-    if let Some(why) = assets::not_a_file(path) {
-        bail!("texture {} {why}", path.display());
-    }
-    // A shipped scene's texture is embedded in the binary (src/assets.rs).
-    let open = || -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
-        let reader: Box<dyn BufReadSeek> = match assets::embedded(path) {
-            Some(f) => Box::new(std::io::Cursor::new(f.contents())),
-            None => Box::new(std::io::BufReader::new(
-                std::fs::File::open(path)
-                    .with_context(|| format!("cannot open texture {}", path.display()))?,
-            )),
-        };
-        image::ImageReader::new(reader)
-            .with_guessed_format()
-            .with_context(|| format!("cannot read texture {}", path.display()))
-    };
-    let (w, h) = open()?
-        .into_dimensions()
-        .with_context(|| format!("texture {} is not a readable image", path.display()))?;
-    if w == 0 || h == 0 || w > MAX_TEXTURE_SIDE || h > MAX_TEXTURE_SIDE {
-        bail!(
-            "texture {} is {w}x{h}; gloss accepts 1..={MAX_TEXTURE_SIDE} pixels a side",
-            path.display()
-        );
-    }
-    let mut limits = image::Limits::default();
-    limits.max_image_width = Some(MAX_TEXTURE_SIDE);
-    limits.max_image_height = Some(MAX_TEXTURE_SIDE);
-    let mut reader = open()?;
-    reader.limits(limits);
-    let img = reader
-        .decode()
-        .with_context(|| format!("texture {} is malformed", path.display()))?;
-    Ok(image::imageops::flip_vertical(&img.to_rgba8()))
-}
-
-/// What `image` reads from: a file or embedded bytes.
-trait BufReadSeek: std::io::BufRead + std::io::Seek {}
-impl<T: std::io::BufRead + std::io::Seek> BufReadSeek for T {}
 
 /// glTexParameteri for wrap and filters on the bound GL_TEXTURE_2D.
 pub fn set_sampling(gl: &glow::Context, s: Sampling) {

@@ -120,6 +120,9 @@ pub(super) struct RenderFile {
     pub(super) wireframe: bool,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
+    pub(super) texture_filter: super::texturing::FilterOverride,
+    pub(super) uv_interpolation: super::texturing::UvInterpolation,
+    pub(super) mip_colors: bool,
 }
 
 impl Default for RenderFile {
@@ -153,6 +156,9 @@ impl Default for RenderFile {
             wireframe: false,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
+            texture_filter: super::texturing::FilterOverride::Material,
+            uv_interpolation: super::texturing::UvInterpolation::Perspective,
+            mip_colors: false,
         }
     }
 }
@@ -247,6 +253,13 @@ pub(super) struct MaterialFile {
     pub(super) cull: Option<Cull>,
     /// Which winding is a front face: "ccw" (the default) or "cw".
     pub(super) winding: Option<super::settings::Winding>,
+    /// How the texture is sampled (src/scene/texturing.rs): the wrap rule
+    /// (one word, or [s, t]), the filter, the anisotropy, and the uv transform.
+    pub(super) wrap: Option<toml::Value>,
+    pub(super) filter: Option<super::texturing::TextureFilter>,
+    pub(super) anisotropy: Option<f32>,
+    pub(super) uv_scale: Option<[f32; 2]>,
+    pub(super) uv_offset: Option<[f32; 2]>,
 }
 
 fn always() -> AlphaTest {

@@ -11,11 +11,13 @@ use glam::Vec3;
 
 mod animation;
 mod lighting;
+mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, STENCIL_VOLUMES,
     TILE_SIZE,
 };
+pub use texturing::{MIP_COLORS, TEXTURE_FILTER, UV_INTERPOLATION};
 
 /// What a knob holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -332,6 +334,9 @@ pub static ALL: &[&Knob] = &[
     &SORT_OPAQUE,
     &FRUSTUM_CULLING,
     &WIREFRAME,
+    &TEXTURE_FILTER,
+    &UV_INTERPOLATION,
+    &MIP_COLORS,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,

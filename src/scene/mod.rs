@@ -36,6 +36,7 @@ pub mod shadows;
 pub mod skins;
 pub mod tessellation;
 mod text;
+pub mod texturing;
 mod views;
 mod warnings;
 
@@ -44,10 +45,10 @@ pub use billboards::{Billboard, BillboardFieldFile, BillboardFile, MAX_BILLBOARD
 pub use file::LightGrid;
 pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
+pub use render_settings::RenderSettings;
 pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, Cull, DeferredLights, DepthFunc,
-    Falloff, JointStorage, MirrorOrder, RenderPath, RenderSettings, Shading, SkinMethod,
-    SkinningOn, Winding,
+    Falloff, JointStorage, MirrorOrder, RenderPath, Shading, SkinMethod, SkinningOn, Winding,
 };
 pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;
@@ -151,6 +152,8 @@ pub struct Material {
     pub cull: Cull,
     /// Which winding its meshes' front faces have (notes 01 §3.4).
     pub winding: Winding,
+    /// How its texture is sampled: wrap, filter, uv transform (notes 01 §5).
+    pub texturing: texturing::Texturing,
 }
 
 impl Material {

@@ -1,9 +1,13 @@
 //! The `[render]` table, checked: each setting's range, and the error that
 //! names the key and what it takes.
 
-use super::RenderSettings;
 use super::file::SceneFile;
 use super::resolve::non_negative;
+use super::settings::{
+    Accumulation, BillboardMode, DeferredLights, DepthFunc, Falloff, JointStorage, MirrorOrder,
+    RenderPath, Shading, SkinningOn,
+};
+use super::texturing::{FilterOverride, UvInterpolation};
 use anyhow::{Result, bail};
 use glam::Vec3;
 
@@ -127,5 +131,80 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         wireframe: r.wireframe,
         skinning_on: r.skinning_on,
         joint_storage: r.joint_storage,
+        texture_filter: r.texture_filter,
+        uv_interpolation: r.uv_interpolation,
+        mip_colors: r.mip_colors,
     })
+}
+
+/// The `[render]` table, resolved and checked (src/scene/resolve.rs).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RenderSettings {
+    pub path: RenderPath,
+    pub shading: Shading,
+    pub size: (u32, u32),
+    pub background: glam::Vec3,
+    pub ambient: glam::Vec3,
+    /// GL_LESS (notes 02: "fails when d >= D") or GL_LEQUAL (notes 01: "passes when z <= D").
+    pub depth_func: DepthFunc,
+    /// Light-volume cutoff, a fraction of the light's brightest channel (notes 04: 5/256).
+    pub cutoff: f32,
+    /// Light volumes: use the two-sided stencil test to mark lit pixels first.
+    pub stencil_volumes: bool,
+    /// Internal format of the light accumulation target (RGBA16F or RGBA32F).
+    pub accumulation: Accumulation,
+    /// How point and spot lights' attenuation ends: the notes' model, or a
+    /// windowed one that reaches 0 at the cutoff radius.
+    pub falloff: Falloff,
+    /// The deferred path: a pass per light, or one pass over all of them.
+    pub deferred_lights: DeferredLights,
+    /// Tiled shading: the screen tile's edge in pixels, and how many depth
+    /// slices cut the view (1: tiles only; more: clustered shading).
+    pub tile_size: u32,
+    pub depth_slices: u32,
+    /// Tiled shading: 0, every light stops at its cutoff radius; k, the light
+    /// beyond half that radius comes from a far field evaluated once per k x k
+    /// pixels (src/techniques/deferred/far_field.rs).
+    pub far_field: u32,
+    /// Not in the scene file: `gloss bench` sets it to render, instead of
+    /// the light, the far field's per-pixel error bound (far_field.rs).
+    pub far_field_bound: bool,
+    /// Planar mirrors (notes 05): the order of their passes, how deep
+    /// reflections recurse, the clip plane and the winding fix (toggles that
+    /// show what goes wrong without them).
+    pub mirror_order: MirrorOrder,
+    pub mirror_depth: u32,
+    pub mirror_clip: bool,
+    pub mirror_winding: bool,
+    /// How billboards are drawn: alpha test, blending, or sorted blending (notes 05).
+    pub billboards: BillboardMode,
+    /// The billboards' alpha test passes alpha >= this (notes 05: 0.5).
+    pub billboard_alpha_ref: f32,
+    /// Draw transparent objects back to front (notes 01 §6.1); false shows
+    /// what goes wrong unsorted.
+    pub sort_transparent: bool,
+    /// Draw opaque objects nearest first (notes 01 §6.2), so that the depth
+    /// test rejects hidden fragments before they are shaded.
+    pub sort_opaque: bool,
+    /// How the post chain passes its image along (src/scene/post.rs).
+    pub post_chain: super::post::ChainForm,
+    /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4
+    /// or 8 (src/techniques/fragment_tests/msaa.rs); 1 is no MSAA.
+    pub msaa: u32,
+    /// Draw only the opaque objects inside the view's frustum (notes 01 §6.3).
+    pub frustum_culling: bool,
+    /// The forward and G-buffer passes draw triangles' edges only
+    /// (glPolygonMode(GL_FRONT_AND_BACK, GL_LINE)): where the clipper cut them.
+    pub wireframe: bool,
+    /// Where skinned meshes are skinned: the GPU pass, or the CPU reference.
+    pub skinning_on: SkinningOn,
+    /// Where the skinning pass reads the joint matrices from.
+    pub joint_storage: JointStorage,
+    /// Every material's texture filter, or one for all (notes 01 §5.2-5.3.1).
+    pub texture_filter: FilterOverride,
+    /// Texture coordinates perspective-correct, or affine (notes 01 §5.1).
+    pub uv_interpolation: UvInterpolation,
+    /// Textures read a twin whose mip levels are flat colours: which level
+    /// lambda picks, pixel by pixel (notes 01 §5.3).
+    pub mip_colors: bool,
 }

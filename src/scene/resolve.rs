@@ -117,6 +117,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         depth_func: None,
         cull: super::Cull::Back,
         winding: super::Winding::Ccw,
+        texturing: Default::default(),
     }];
     let mut material_index = HashMap::new();
     for n in names {
@@ -178,6 +179,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             depth_func: m.depth_func,
             cull: m.cull.unwrap_or(super::Cull::Back),
             winding: m.winding.unwrap_or(super::Winding::Ccw),
+            texturing: super::texturing::texturing(n, m)?,
         });
     }
     Ok((materials, material_index))

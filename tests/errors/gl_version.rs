@@ -19,6 +19,7 @@ fn fake_info(major: i32, minor: i32, core_profile: bool) -> GlInfo {
         max_uniform_block_size: 16384,
         max_clip_distances: 8,
         max_vertex_uniform_components: 1024,
+        max_anisotropy: 1.0,
     }
 }
 

@@ -42,6 +42,7 @@ use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::Scene;
 use crate::scene::knobs;
+use crate::scene::texturing::UvInterpolation;
 use anyhow::Result;
 use glam::{Mat4, Vec3};
 use glow::HasContext;
@@ -176,6 +177,9 @@ impl RunPasses for Transparency {
             p.set_i32("u_light_count", u.light_count);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            // Texture coordinates perspective-correct or affine (notes 01 §5.1).
+            let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
+            p.set_bool("u_affine_uv", affine);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             f.shadows.bind(gl);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
@@ -189,7 +193,10 @@ impl RunPasses for Transparency {
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));
-                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
+                // Its texture, and the sampler that says how to read it
+                // (notes 01 §5: the wrap rule per axis, the filter).
+                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d, &f.scene.render));
+                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
                 f.draws.set_object_uniforms(p, d);
                 p.set_f32("u_opacity", d.opacity);
                 // Back faces first (the far side), then front faces.
@@ -207,6 +214,7 @@ impl RunPasses for Transparency {
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);
+            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);

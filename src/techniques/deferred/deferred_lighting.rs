@@ -25,6 +25,7 @@ use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
+use crate::scene::texturing::UvInterpolation;
 use crate::scene::{RenderPath, Scene};
 use crate::techniques::deferred::light_volumes::{draw_bounded_volumes, volume_pass};
 use anyhow::Result;
@@ -207,6 +208,9 @@ impl DeferredLighting {
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_bool("u_has_light", light.is_some());
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            // Texture coordinates perspective-correct or affine (notes 01 §5.1).
+            let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
+            p.set_bool("u_affine_uv", affine);
             p.set_i32("u_diffuse_light", unit::LIGHT as i32);
             p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
             f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
@@ -231,7 +235,10 @@ impl DeferredLighting {
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));
-                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
+                // Its texture, and the sampler that says how to read it
+                // (notes 01 §5: the wrap rule per axis, the filter).
+                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d, &f.scene.render));
+                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
                 f.draws.set_object_uniforms(p, d);
                 f.draws.mesh(d).draw();
             }
@@ -243,6 +250,7 @@ impl DeferredLighting {
             }
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
+            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
             gl.bind_texture(glow::TEXTURE_2D, None);
             for u in [unit::LIGHT, unit::SPECULAR_LIGHT] {
                 gl.active_texture(glow::TEXTURE0 + u);

@@ -18,6 +18,7 @@ use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
+use crate::scene::texturing::UvInterpolation;
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 use glow::HasContext;
@@ -125,6 +126,9 @@ impl RunPasses for GBufferPass {
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            // Texture coordinates perspective-correct or affine (notes 01 §5.1).
+            let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
+            p.set_bool("u_affine_uv", affine);
             f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             let mut depth_func = f.scene.render.depth_func;
@@ -150,7 +154,10 @@ impl RunPasses for GBufferPass {
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));
-                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
+                // Its texture, and the sampler that says how to read it
+                // (notes 01 §5: the wrap rule per axis, the filter).
+                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d, &f.scene.render));
+                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
                 f.draws.set_object_uniforms(p, d);
                 f.draws.mesh(d).draw();
             }
@@ -161,6 +168,7 @@ impl RunPasses for GBufferPass {
             for i in 0..f.scene.clip_planes.len() as u32 {
                 gl.disable(glow::CLIP_DISTANCE1 + i);
             }
+            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.disable(glow::FRAMEBUFFER_SRGB);

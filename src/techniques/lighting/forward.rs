@@ -30,6 +30,7 @@ use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
+use crate::scene::texturing::UvInterpolation;
 use crate::scene::{RenderPath, Scene, Shading};
 use anyhow::Result;
 use glow::HasContext;
@@ -52,6 +53,10 @@ pub const FORWARD: Technique = Technique {
     knobs: &[
         &knobs::SHADING,
         &knobs::WIREFRAME,
+        // Texture mapping (notes 01 §5): every geometry pass reads these.
+        &knobs::TEXTURE_FILTER,
+        &knobs::UV_INTERPOLATION,
+        &knobs::MIP_COLORS,
         &knobs::DEPTH_FUNC,
         &knobs::AMBIENT,
         &knobs::BACKGROUND,
@@ -173,6 +178,9 @@ impl RunPasses for Forward {
             p.set_i32("u_light_count", u.light_count);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            // Texture coordinates perspective-correct or affine (notes 01 §5.1).
+            let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
+            p.set_bool("u_affine_uv", affine);
             f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             f.shadows.bind(gl);
@@ -200,7 +208,10 @@ impl RunPasses for Forward {
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));
-                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d));
+                // Its texture, and the sampler that says how to read it
+                // (notes 01 §5: the wrap rule per axis, the filter).
+                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d, &f.scene.render));
+                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
                 f.draws.set_object_uniforms(p, d);
                 f.draws.mesh(d).draw();
             }
@@ -214,6 +225,7 @@ impl RunPasses for Forward {
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);
+            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);

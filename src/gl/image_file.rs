@@ -1,0 +1,55 @@
+//! Image files decoded for textures, through the `image` crate: PNG (grey,
+//! grey + alpha, RGB, RGBA; 8 or 16 bits a channel) to RGBA8, flipped so
+//! that v = 0 is the bottom row, with absurd sizes refused before decoding.
+
+use crate::assets;
+use anyhow::{Context as _, Result, bail};
+use std::path::Path;
+
+/// Largest texture side gloss will load from a file (an absurd PNG is refused
+/// before it is decoded into memory).
+pub const MAX_TEXTURE_SIDE: u32 = 8192;
+
+/// Decode an image file to RGBA8 with v flipped for GL, refusing absurd sizes
+/// before decoding.
+pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
+    // What is there, from its metadata alone: a FIFO is never opened.
+    if let Some(why) = assets::not_a_file(path) {
+        bail!("texture {} {why}", path.display());
+    }
+    // A shipped scene's texture is embedded in the binary (src/assets.rs).
+    let open = || -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
+        let reader: Box<dyn BufReadSeek> = match assets::embedded(path) {
+            Some(f) => Box::new(std::io::Cursor::new(f.contents())),
+            None => Box::new(std::io::BufReader::new(
+                std::fs::File::open(path)
+                    .with_context(|| format!("cannot open texture {}", path.display()))?,
+            )),
+        };
+        image::ImageReader::new(reader)
+            .with_guessed_format()
+            .with_context(|| format!("cannot read texture {}", path.display()))
+    };
+    let (w, h) = open()?
+        .into_dimensions()
+        .with_context(|| format!("texture {} is not a readable image", path.display()))?;
+    if w == 0 || h == 0 || w > MAX_TEXTURE_SIDE || h > MAX_TEXTURE_SIDE {
+        bail!(
+            "texture {} is {w}x{h}; gloss accepts 1..={MAX_TEXTURE_SIDE} pixels a side",
+            path.display()
+        );
+    }
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(MAX_TEXTURE_SIDE);
+    limits.max_image_height = Some(MAX_TEXTURE_SIDE);
+    let mut reader = open()?;
+    reader.limits(limits);
+    let img = reader
+        .decode()
+        .with_context(|| format!("texture {} is malformed", path.display()))?;
+    Ok(image::imageops::flip_vertical(&img.to_rgba8()))
+}
+
+/// What `image` reads from: a file or embedded bytes.
+trait BufReadSeek: std::io::BufRead + std::io::Seek {}
+impl<T: std::io::BufRead + std::io::Seek> BufReadSeek for T {}

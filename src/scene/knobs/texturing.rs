@@ -1,0 +1,45 @@
+//! The knobs of texture mapping (notes 01 §5): one filter for every
+//! material, how texture coordinates are interpolated, and the mip levels
+//! shown as colours.
+
+use super::{Kind, Knob, Value, index};
+use crate::scene::texturing::{FilterOverride, UvInterpolation};
+
+pub static TEXTURE_FILTER: Knob = Knob {
+    key: "render.texture_filter",
+    label: "texture filter",
+    help: "material: each material's own filter; otherwise one for all: nearest, bilinear (§5.2), the nearest mip level point-sampled or bilinear (§5.3), trilinear (§5.3.1), anisotropic",
+    kind: Kind::Choice(FilterOverride::WORDS),
+    get: |r| Value::Choice(index(FilterOverride::ALL, r.texture_filter)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.texture_filter = FilterOverride::ALL[i];
+        }
+    },
+};
+
+pub static UV_INTERPOLATION: Knob = Knob {
+    key: "render.uv_interpolation",
+    label: "texture coordinates",
+    help: "perspective: divided by w, interpolated, multiplied back (§5.1); affine: linear across the screen (GLSL noperspective), which bends a tilted texture",
+    kind: Kind::Choice(UvInterpolation::WORDS),
+    get: |r| Value::Choice(index(UvInterpolation::ALL, r.uv_interpolation)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.uv_interpolation = UvInterpolation::ALL[i];
+        }
+    },
+};
+
+pub static MIP_COLORS: Knob = Knob {
+    key: "render.mip_colors",
+    label: "mip levels as colours",
+    help: "each texture is replaced by a twin of its size whose mip levels are flat colours (level 0 red, 1 green, 2 blue, 3 yellow, 4 magenta, 5 cyan, 6 white, 7 black, then again): the level lambda picks, pixel by pixel (§5.3)",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.mip_colors),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.mip_colors = b;
+        }
+    },
+};

@@ -382,3 +382,35 @@ fn front_to_back_shades_fewer_fragments_a_pixel() {
     );
     assert!(sorted > 0.1, "{stdout}");
 }
+
+/// `gloss bench --filtering` (src/bench/filtering.rs): one row a filter,
+/// each with its error against the 64-sample reference. Mip mapping is what
+/// removes the far floor's aliasing: the filters that read a mip level are
+/// closer to the reference than those that read level 0 alone, and
+/// anisotropic filtering is no farther than trilinear.
+#[test]
+fn bench_measures_texture_filters_against_a_supersampled_reference() {
+    let out = std::env::temp_dir().join("gloss-bench-filtering");
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(["bench", "--filtering", "--frames", "1", "--warmup", "0"])
+        .args(["--size", "320x180", "--out"])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rmse = |filter: &str| -> f64 {
+        let row = (stdout.lines())
+            .find(|l| l.split_whitespace().next() == Some(filter))
+            .unwrap_or_else(|| panic!("no row for {filter}: {stdout}"));
+        row.split_whitespace().last().unwrap().parse().unwrap()
+    };
+    let (nearest, bilinear) = (rmse("nearest"), rmse("bilinear"));
+    let (trilinear, anisotropic) = (rmse("trilinear"), rmse("anisotropic"));
+    assert!(nearest.is_finite() && nearest > 0.0, "{stdout}");
+    assert!(trilinear < 0.8 * nearest.min(bilinear), "{stdout}");
+    assert!(rmse("bilinear_mip") < nearest.min(bilinear), "{stdout}");
+    assert!(anisotropic <= trilinear + 0.1, "{stdout}");
+    assert!(out.join("filtering.csv").is_file());
+}

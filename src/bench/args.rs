@@ -57,6 +57,12 @@ pub struct BenchArgs {
     /// default scene scenes/antialiasing.toml.
     #[arg(long, conflicts_with = "vary")]
     pub aa: bool,
+    /// Measure texture filtering instead (nearest, bilinear, nearest or
+    /// bilinear within a mip level, trilinear, anisotropic) against a
+    /// 64-sample supersampled reference (src/bench/filtering.rs); default
+    /// scene scenes/texture-filtering.toml.
+    #[arg(long, conflicts_with_all = ["vary", "aa"])]
+    pub filtering: bool,
     /// Measure how each path's frame time grows with the number of lights
     /// (their radii shrunk so that about as many reach each pixel) and with
     /// the number of pixels, instead (src/bench/scaling.rs).

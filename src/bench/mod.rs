@@ -10,10 +10,9 @@
 //! around glFinish ("cpu+glFinish"). On a real GPU the whole frame is also
 //! timed with a GL_TIME_ELAPSED query ("gpu" column).
 //!
-//! `--aa` measures anti-aliasing against a supersampled reference instead
-//! (`aa`); `--scaling`, how the paths' times grow with lights and pixels
-//! (`scaling`).
-//!
+//! `--aa` and `--filtering` measure anti-aliasing and texture filtering
+//! against supersampled references instead (`aa`, `filtering`);
+//! `--scaling`, how the paths' times grow with lights and pixels.
 //! The files: `args`, `stats` (median and spread), `table`, `csv`, `plot`
 //! (error against frame time), `floor` (each pass against the fill-rate
 //! floor), `bound` (the far field's error bound), `pareto` (settings no
@@ -26,6 +25,7 @@ mod args;
 pub mod bloom;
 pub mod bound;
 mod csv;
+pub mod filtering;
 mod floor;
 mod overdraw;
 pub mod pareto;
@@ -90,6 +90,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     }
     let default = match () {
         _ if args.aa => "scenes/antialiasing.toml",
+        _ if args.filtering => "scenes/texture-filtering.toml",
         _ if !args.particles.is_empty() => "scenes/particles.toml",
         _ if !args.skinning.is_empty() => "scenes/skinned-arm.toml",
         _ => "scenes/many-lights.toml",
@@ -104,6 +105,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     // The other measurements, each in its own file.
     match () {
         _ if args.aa => return aa::run(args, &scene_path, &ctx),
+        _ if args.filtering => return filtering::run(args, &scene_path, &ctx),
         _ if args.scaling => return scaling::run(args, &base, &ctx, software),
         _ if !args.particles.is_empty() => return particles::run(args, &base, &ctx),
         _ if !args.skinning.is_empty() => return skinning::run(args, &base, &ctx),

@@ -116,6 +116,9 @@ pub struct FramePlan {
     /// depth difference the 24-bit depth buffer resolves, (z, dz) at a few
     /// distances (src/math/depth.rs).
     pub depth_precision: DepthPrecision,
+    /// The materials' textures (notes 01 §5.3): file, width, height, or the
+    /// error reading its header.
+    pub textures: Vec<(String, Result<(u32, u32), String>)>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -243,6 +246,7 @@ impl FramePlan {
             views: order.views,
             size: scene.render.size,
             depth_precision: DepthPrecision::new(scene),
+            textures: textures(scene),
         }
     }
 
@@ -255,10 +259,53 @@ impl FramePlan {
     }
 }
 
+/// The textures the scene's objects sample, each once, with their sizes.
+fn textures(scene: &Scene) -> Vec<(String, Result<(u32, u32), String>)> {
+    let mut seen = Vec::new();
+    for o in &scene.objects {
+        if let Some(p) = &scene.materials[o.material].diffuse_texture
+            && !seen.contains(p)
+        {
+            seen.push(p.clone());
+        }
+    }
+    seen.iter()
+        .map(|p| {
+            let name = p.file_name().map_or_else(
+                || p.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            );
+            let size = crate::gl::image_file::dimensions(p).map_err(|e| format!("{e:#}"));
+            (name, size)
+        })
+        .collect()
+}
+
 impl std::fmt::Display for FramePlan {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         writeln!(f, "path: {}", self.path.name())?;
         let (w, h) = self.size;
+        if !self.textures.is_empty() {
+            writeln!(
+                f,
+                "textures (RGBA8, with the mip chain made at load, notes 01 §5.3):"
+            )?;
+        }
+        for (name, size) in &self.textures {
+            match size {
+                Ok((tw, th)) => {
+                    let level0 = u64::from(tw * th * 4);
+                    let chain = crate::math::texturing::mip_chain_bytes(*tw, *th, 4);
+                    writeln!(
+                        f,
+                        "  {name}  {tw}x{th}: {level0} bytes, {chain} with its {} levels (+{:.0}%)",
+                        crate::gl::texture::max_level(*tw as i32, *th as i32) + 1,
+                        100.0 * (chain - level0) as f64 / level0 as f64
+                    )?;
+                }
+                Err(e) => writeln!(f, "  {name}  ({e})")?,
+            }
+        }
         writeln!(f, "render targets ({w}x{h}):")?;
         for t in &self.targets {
             let bytes = size_name(t.bytes(w, h));

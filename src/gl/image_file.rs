@@ -17,19 +17,7 @@ pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
     if let Some(why) = assets::not_a_file(path) {
         bail!("texture {} {why}", path.display());
     }
-    // A shipped scene's texture is embedded in the binary (src/assets.rs).
-    let open = || -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
-        let reader: Box<dyn BufReadSeek> = match assets::embedded(path) {
-            Some(f) => Box::new(std::io::Cursor::new(f.contents())),
-            None => Box::new(std::io::BufReader::new(
-                std::fs::File::open(path)
-                    .with_context(|| format!("cannot open texture {}", path.display()))?,
-            )),
-        };
-        image::ImageReader::new(reader)
-            .with_guessed_format()
-            .with_context(|| format!("cannot read texture {}", path.display()))
-    };
+    let open = || reader(path);
     let (w, h) = open()?
         .into_dimensions()
         .with_context(|| format!("texture {} is not a readable image", path.display()))?;
@@ -48,6 +36,32 @@ pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
         .decode()
         .with_context(|| format!("texture {} is malformed", path.display()))?;
     Ok(image::imageops::flip_vertical(&img.to_rgba8()))
+}
+
+/// The width and height of an image file, from its header alone (the frame
+/// plan reports a texture's memory without decoding it).
+pub fn dimensions(path: &Path) -> Result<(u32, u32)> {
+    if let Some(why) = assets::not_a_file(path) {
+        bail!("texture {} {why}", path.display());
+    }
+    reader(path)?
+        .into_dimensions()
+        .with_context(|| format!("texture {} is not a readable image", path.display()))
+}
+
+/// A reader of the image at `path`: a shipped scene's texture is embedded in
+/// the binary (src/assets.rs), any other is opened.
+fn reader(path: &Path) -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
+    let reader: Box<dyn BufReadSeek> = match assets::embedded(path) {
+        Some(f) => Box::new(std::io::Cursor::new(f.contents())),
+        None => Box::new(std::io::BufReader::new(
+            std::fs::File::open(path)
+                .with_context(|| format!("cannot open texture {}", path.display()))?,
+        )),
+    };
+    image::ImageReader::new(reader)
+        .with_guessed_format()
+        .with_context(|| format!("cannot read texture {}", path.display()))
 }
 
 /// What `image` reads from: a file or embedded bytes.

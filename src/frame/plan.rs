@@ -118,8 +118,12 @@ pub struct FramePlan {
     pub depth_precision: DepthPrecision,
     /// The materials' textures (notes 01 §5.3): file, width, height, or the
     /// error reading its header.
-    pub textures: Vec<(String, Result<(u32, u32), String>)>,
+    pub textures: Vec<PlanTexture>,
 }
+
+/// A texture in the plan: its file name, and its width and height or why
+/// they could not be read.
+pub type PlanTexture = (String, Result<(u32, u32), String>);
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct DepthPrecision {
@@ -260,7 +264,7 @@ impl FramePlan {
 }
 
 /// The textures the scene's objects sample, each once, with their sizes.
-fn textures(scene: &Scene) -> Vec<(String, Result<(u32, u32), String>)> {
+fn textures(scene: &Scene) -> Vec<PlanTexture> {
     let mut seen = Vec::new();
     for o in &scene.objects {
         if let Some(p) = &scene.materials[o.material].diffuse_texture

@@ -12,6 +12,7 @@
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/texcoord_in.glsl"
+#include "common/normal_map.glsl"
 
 uniform int u_light_count;
 uniform vec3 u_eye;
@@ -22,7 +23,7 @@ out vec4 frag_color;
 
 void main() {
     vec2 uv = surface_uv();
-    vec3 N = safe_normal(v_normal, v_position);
+    vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     // A back face (the far wall of a glass sphere) faces the eye from inside.
     if (!gl_FrontFacing) N = -N;
     vec3 V = normalize(u_eye - v_position);

@@ -10,6 +10,7 @@
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/texcoord_in.glsl"
+#include "common/normal_map.glsl"
 
 layout(location = 0) out vec4 g_normal_shininess;
 layout(location = 1) out vec4 g_albedo;
@@ -18,7 +19,8 @@ layout(location = 2) out vec4 g_specular;
 void main() {
     vec2 uv = surface_uv();
     alpha_test(material_alpha(uv));
-    g_normal_shininess = vec4(safe_normal(v_normal, v_position), u_shininess);
+    // The normal after the normal map (notes 01 §8.4) is what the lights read.
+    g_normal_shininess = vec4(bumped_normal(safe_normal(v_normal, v_position), uv), u_shininess);
     g_albedo = vec4(material_diffuse(uv), 1.0);
     g_specular = vec4(u_specular, 1.0);
 }

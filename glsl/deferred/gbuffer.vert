@@ -11,6 +11,7 @@ uniform mat3 u_normal_matrix;
 // reflection of each vertex (common/view.glsl).
 #include "common/view.glsl"
 #include "common/texcoord.glsl"
+#include "common/tangent.glsl"
 
 out vec3 v_position;
 out vec3 v_normal;
@@ -23,6 +24,7 @@ void main() {
     v_position = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     write_texcoord(a_uv);
+    write_tangent();
     gl_Position = u_view_projection * view_position(world);
     write_clip_distances(world);
 }

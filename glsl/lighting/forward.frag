@@ -10,6 +10,7 @@
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/texcoord_in.glsl"
+#include "common/normal_map.glsl"
 
 uniform int u_light_count;
 uniform vec3 u_eye;
@@ -20,7 +21,7 @@ out vec4 frag_color;
 void main() {
     vec2 uv = surface_uv();
     alpha_test(material_alpha(uv));
-    vec3 N = safe_normal(v_normal, v_position);
+    vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 V = normalize(u_eye - v_position);
     vec3 kd = material_diffuse(uv);
     vec3 c = u_ambient * kd;

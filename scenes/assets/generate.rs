@@ -6,6 +6,9 @@
 //!   coordinates outside [0, 1] (repeat: a sawtooth, mirror: a triangle,
 //!   clamp: flat);
 //! * `bricks.png`: 256x256 procedural brick albedo (running bond, mortar);
+//! * `bricks-normal.png`: its tangent-space normal map (linear data), baked
+//!   by `gloss::math::bump::bake_normal_map` from the bricks' height field:
+//!   mortar 1.5 texels below the brick faces, with a 3-texel bevel;
 //! * `ripples.png`: 256x256 linear greyscale ripples, 0.55 to 1, that roughen
 //!   a mirror's reflection (a lake's surface);
 //! * `knot.obj`: a (2, 3) torus knot tube, 3072 triangles, with normals and uvs;
@@ -39,6 +42,7 @@ fn main() -> Result<()> {
     write_png(&dir.join("checker.png"), checker())?;
     write_png(&dir.join("uv-ramp.png"), uv_ramp())?;
     write_png(&dir.join("bricks.png"), bricks())?;
+    write_png(&dir.join("bricks-normal.png"), bricks_normal())?;
     write_png(&dir.join("ripples.png"), ripples())?;
     write_rgba_png(&dir.join("tree.png"), tree())?;
     write_rgba_png(&dir.join("grass.png"), grass())?;
@@ -189,6 +193,33 @@ fn checker() -> image::RgbImage {
             teal
         })
     })
+}
+
+/// The height of the bricks at image position (x, y) in texels (y down, as
+/// `bricks` lays them out): 0 in the mortar, rising over a 3-texel bevel to
+/// 1.5 texels on a brick's face, plus a little grain.
+fn bricks_height(x: f64, y: f64) -> f64 {
+    const BRICK_W: f64 = 64.0;
+    const BRICK_H: f64 = 32.0;
+    const MORTAR: f64 = 3.0;
+    let (x, y) = (x.rem_euclid(256.0), y.rem_euclid(256.0));
+    let row = (y / BRICK_H).floor();
+    let xs = (x + (row % 2.0) * BRICK_W / 2.0).rem_euclid(256.0);
+    let (bx, by) = (xs % BRICK_W - MORTAR, y % BRICK_H - MORTAR);
+    // Distance to the brick's nearest edge (negative in the mortar).
+    let edge = bx
+        .min(BRICK_W - MORTAR - bx)
+        .min(by)
+        .min(BRICK_H - MORTAR - by);
+    1.5 * (edge / 3.0).clamp(0.0, 1.0)
+}
+
+fn bricks_normal() -> image::RgbImage {
+    // Heights in uv units: texels / 256; the image row of v is (1 - v) 256.
+    let texels = gloss::math::bump::bake_normal_map(256, 256, |u, v| {
+        bricks_height(u * 256.0, (1.0 - v) * 256.0) / 256.0
+    });
+    image::RgbImage::from_fn(256, 256, |x, y| image::Rgb(texels[(y * 256 + x) as usize]))
 }
 
 fn uv_ramp() -> image::RgbImage {

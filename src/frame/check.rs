@@ -29,7 +29,7 @@ pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
         // Mesa and the desktop drivers hold 2^27 texels; the renderer checks its own GL.
         1 << 27,
     )?;
-    // The draw list's order: each object's mesh, its material's texture,
+    // The draw list's order: each object's mesh, its material's textures,
     // its mirror's roughness texture; each file once.
     let mut meshes: HashSet<&MeshSource> = HashSet::new();
     let mut textures: HashSet<&PathBuf> = HashSet::new();
@@ -38,10 +38,10 @@ pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
             mesh_data(&o.mesh)?;
         }
         let m = &scene.materials[o.material];
-        if let Some(p) = &m.diffuse_texture
-            && textures.insert(p)
-        {
-            load_rgba8(p)?;
+        for p in [&m.diffuse_texture, &m.normal_map].into_iter().flatten() {
+            if textures.insert(p) {
+                load_rgba8(p)?;
+            }
         }
         if let Some(p) = o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
             load_rgba8(p)?;

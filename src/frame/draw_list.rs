@@ -20,6 +20,7 @@ use crate::scene::texturing::Texturing;
 use crate::scene::{Cull, DepthFunc, MeshSource, RenderSettings, Scene, Winding};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
+use glow::HasContext;
 use std::cell::Cell;
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -39,6 +40,8 @@ pub struct DrawItem {
     pub specular: Vec3,
     pub shininess: f32,
     pub texture: Option<usize>,
+    /// The material's normal map (notes 01 §8.4), if it has one.
+    pub normal_map: Option<usize>,
     /// How the texture is sampled, and the uv transform (notes 01 §5).
     pub texturing: Texturing,
     /// The object is a mirror: the mirror technique draws it (stencil/mirror.rs),
@@ -91,7 +94,8 @@ impl DrawList {
         let mut meshes = Vec::new();
         let mut mesh_index: HashMap<MeshSource, usize> = HashMap::new();
         let mut textures = Vec::new();
-        let mut texture_index: HashMap<PathBuf, usize> = HashMap::new();
+        // Keyed by file and colour space: one PNG may be both.
+        let mut texture_index: HashMap<(PathBuf, bool), usize> = HashMap::new();
         let mut items = Vec::new();
         let mut bounds = Vec::new();
         let mut skins = Vec::new();
@@ -115,17 +119,21 @@ impl DrawList {
                 }
             };
             let m = &scene.materials[o.material];
-            let texture = match &m.diffuse_texture {
-                None => None,
-                Some(p) => Some(match texture_index.get(p) {
-                    Some(&i) => i,
-                    None => {
-                        textures.push(Texture::load(gl, p, true, Sampling::TRILINEAR_REPEAT)?);
-                        texture_index.insert(p.clone(), textures.len() - 1);
-                        textures.len() - 1
-                    }
-                }),
+            let mut load = |p: &PathBuf, srgb: bool| -> Result<usize> {
+                if let Some(&i) = texture_index.get(&(p.clone(), srgb)) {
+                    return Ok(i);
+                }
+                textures.push(Texture::load(gl, p, srgb, Sampling::TRILINEAR_REPEAT)?);
+                texture_index.insert((p.clone(), srgb), textures.len() - 1);
+                Ok(textures.len() - 1)
             };
+            let texture = m
+                .diffuse_texture
+                .as_ref()
+                .map(|p| load(p, true))
+                .transpose()?;
+            // Data, not colour: a normal map is linear (GL_RGBA8), never sRGB-decoded.
+            let normal_map = m.normal_map.as_ref().map(|p| load(p, false)).transpose()?;
             let roughness = match o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
                 None => None,
                 Some(p) => {
@@ -144,6 +152,7 @@ impl DrawList {
                 specular: m.specular,
                 shininess: m.shininess,
                 texture,
+                normal_map,
                 texturing: m.texturing,
                 mirror: o.mirror.is_some(),
                 roughness,
@@ -160,7 +169,7 @@ impl DrawList {
         let textured: Vec<Texturing> = scene
             .materials
             .iter()
-            .filter(|m| m.diffuse_texture.is_some())
+            .filter(|m| m.diffuse_texture.is_some() || m.normal_map.is_some())
             .map(|m| m.texturing)
             .collect();
         let samplers = TextureSamplers::new(gl, &textured, &textures)?;
@@ -294,8 +303,53 @@ impl DrawList {
     /// The sampler object the object's texture is read with under `r`
     /// (glBindSampler on the diffuse texture's unit).
     pub fn sampler(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Sampler> {
-        d.texture?;
+        d.texture.or(d.normal_map)?;
         self.samplers.sampler(&d.texturing, r)
+    }
+
+    /// The object's normal map, if its material has one and
+    /// `render.normal_mapping` is on.
+    pub fn normal_map(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Texture> {
+        let t = d.normal_map.filter(|_| r.normal_mapping)?;
+        Some(self.textures[t].id)
+    }
+
+    /// A geometry pass's per-object texture binds (notes 01 §5, §8.4): the
+    /// diffuse texture on unit DIFFUSE_TEXTURE and the normal map on unit
+    /// NORMAL_MAP, each with the material's sampler object (the wrap rule
+    /// per axis and the filter), in this order:
+    ///
+    /// glActiveTexture(NORMAL_MAP); glBindTexture; glBindSampler;
+    /// glActiveTexture(DIFFUSE_TEXTURE); glBindTexture; glBindSampler;
+    ///
+    /// and `u_has_normal_map` for program `p`. Unit DIFFUSE_TEXTURE is left
+    /// active; `unbind_textures` undoes it all.
+    pub fn bind_textures(&self, gl: &glow::Context, p: &Program, d: &DrawItem, r: &RenderSettings) {
+        use crate::frame::uniforms::unit;
+        let sampler = self.sampler(d, r);
+        let normal_map = self.normal_map(d, r);
+        unsafe {
+            gl.active_texture(glow::TEXTURE0 + unit::NORMAL_MAP);
+            gl.bind_texture(glow::TEXTURE_2D, normal_map);
+            gl.bind_sampler(unit::NORMAL_MAP, sampler);
+            gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+            gl.bind_texture(glow::TEXTURE_2D, self.texture(d, r));
+            gl.bind_sampler(unit::DIFFUSE_TEXTURE, sampler);
+        }
+        p.set_bool("u_has_normal_map", normal_map.is_some());
+    }
+
+    /// Unbind what `bind_textures` bound; unit 0 is left active.
+    pub fn unbind_textures(gl: &glow::Context) {
+        use crate::frame::uniforms::unit;
+        unsafe {
+            for u in [unit::NORMAL_MAP, unit::DIFFUSE_TEXTURE] {
+                gl.active_texture(glow::TEXTURE0 + u);
+                gl.bind_texture(glow::TEXTURE_2D, None);
+                gl.bind_sampler(u, None);
+            }
+            gl.active_texture(glow::TEXTURE0);
+        }
     }
 
     /// glUniform* for one object's transform and material (program `p` in use).
@@ -312,6 +366,8 @@ impl DrawList {
             "u_uv_transform",
             glam::Vec4::new(scale[0], scale[1], offset[0], offset[1]),
         );
+        let mirrors = Mat3::from_mat4(d.model).determinant() < 0.0;
+        p.set_f32("u_tangent_sign", if mirrors { -1.0 } else { 1.0 });
         p.set_i32("u_alpha_test", d.alpha_test);
         p.set_f32("u_alpha_ref", d.alpha_ref);
     }

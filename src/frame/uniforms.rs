@@ -37,6 +37,8 @@ pub struct FrameUniforms {
 pub mod unit {
     /// Geometry passes: the material's diffuse texture (`u_diffuse_texture`).
     pub const DIFFUSE_TEXTURE: u32 = 0;
+    /// Geometry passes: the material's normal map (`u_normal_map`, notes 01 §8.4).
+    pub const NORMAL_MAP: u32 = 1;
     /// Lighting passes read the G-buffer (`glsl/common/gbuffer_read.glsl`).
     pub const GBUFFER_NORMAL: u32 = 0;
     pub const GBUFFER_ALBEDO: u32 = 1;

@@ -34,13 +34,15 @@ mod normals;
 mod obj;
 mod shapes;
 pub mod skin;
+mod tangents;
 mod volumes;
 
 pub use gltf::{MAX_GLTF_BYTES, MAX_GLTF_VERTICES, load_gltf};
 pub use gltf_write::write_glb;
-pub use normals::{compute_normals, compute_tangents};
+pub use normals::compute_normals;
 pub use obj::{MAX_OBJ_BYTES, MAX_OBJ_VERTICES, load_obj};
 pub use shapes::{cone, cube, cylinder, fullscreen_triangle, icosphere, plane, torus, uv_sphere};
+pub use tangents::compute_tangents;
 pub use volumes::{bounding_radius, light_volume_sphere};
 
 use glam::{Vec2, Vec3};

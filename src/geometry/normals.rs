@@ -1,9 +1,9 @@
-//! Per-vertex normals and tangents computed from the triangles: smooth,
-//! area-weighted normals (notes 01 §8.1) and the tangent frame (TBN) that
-//! bump mapping needs (notes 01 §8.4).
+//! Per-vertex normals computed from the triangles: smooth, area-weighted
+//! normals (notes 01 §8.1). The tangents bump mapping needs are in
+//! `tangents.rs`; this file's tests check both.
 
 use super::MeshData;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 use std::collections::HashMap;
 
 /// Replaces every normal by the area-weighted average of the normals of the
@@ -45,72 +45,9 @@ pub fn compute_normals(mesh: &mut MeshData) {
     }
 }
 
-/// Computes `tangent` for every vertex from the uv layout (notes 01 §8.4):
-/// for each triangle, the direction in which u grows across it
-/// (dP/du = (e1 * dv2 - e2 * dv1) / det, with edges e1, e2 and uv deltas), and
-/// likewise dP/dv. Both are summed per vertex, weighted by the triangle's uv
-/// area (so a triangle with zero uv area adds nothing), then the tangent is
-/// made perpendicular to the normal (Gram-Schmidt: T - N (N.T)), normalised,
-/// and w is set to +1 if cross(N, T) points along dP/dv and -1 if it points
-/// against it (mirrored uvs).
-///
-/// A vertex with no usable uv direction (zero uv area, all uvs equal, no uvs
-/// at all, or non-finite data) gets some unit vector perpendicular to its
-/// normal instead, and w = +1: never NaN. Normals should be set first.
-pub fn compute_tangents(mesh: &mut MeshData) {
-    let count = mesh.vertices.len();
-    let mut tan = vec![Vec3::ZERO; count];
-    let mut bit = vec![Vec3::ZERO; count];
-    for t in mesh.indices.chunks_exact(3) {
-        let (Some(a), Some(b), Some(c)) = (
-            mesh.vertices.get(t[0] as usize),
-            mesh.vertices.get(t[1] as usize),
-            mesh.vertices.get(t[2] as usize),
-        ) else {
-            continue;
-        };
-        let e1 = Vec3::from(b.position) - Vec3::from(a.position);
-        let e2 = Vec3::from(c.position) - Vec3::from(a.position);
-        let d1 = Vec2::from(b.uv) - Vec2::from(a.uv);
-        let d2 = Vec2::from(c.uv) - Vec2::from(a.uv);
-        let det = d1.x * d2.y - d2.x * d1.y;
-        // (e1 d2.y - e2 d1.y) = det * dP/du: multiplying by sign(det) instead
-        // of dividing by det weights each triangle by its uv area.
-        let sign = if det < 0.0 { -1.0 } else { 1.0 };
-        let t_dir = (e1 * d2.y - e2 * d1.y) * sign;
-        let b_dir = (e2 * d1.x - e1 * d2.x) * sign;
-        if !t_dir.is_finite() || !b_dir.is_finite() {
-            continue;
-        }
-        for &i in t {
-            tan[i as usize] += t_dir;
-            bit[i as usize] += b_dir;
-        }
-    }
-    for (i, v) in mesh.vertices.iter_mut().enumerate() {
-        let n = Vec3::from(v.normal).try_normalize().unwrap_or(Vec3::Y);
-        let t = tan[i];
-        let ortho = t - n * n.dot(t);
-        // Relative test: T almost parallel to N leaves only rounding noise.
-        let usable = ortho.is_finite() && ortho.length() > 1e-6 * t.length();
-        let (tangent, w) = match ortho.try_normalize().filter(|_| usable) {
-            Some(tangent) => {
-                let w = if n.cross(tangent).dot(bit[i]) < 0.0 {
-                    -1.0
-                } else {
-                    1.0
-                };
-                (tangent, w)
-            }
-            None => (any_perpendicular(n), 1.0),
-        };
-        v.tangent = [tangent.x, tangent.y, tangent.z, w];
-    }
-}
-
 /// A unit vector perpendicular to the unit vector `n`: +x made perpendicular
 /// to n (or +y when n is close to ±x). For a +y normal this is +x.
-fn any_perpendicular(n: Vec3) -> Vec3 {
+pub(super) fn any_perpendicular(n: Vec3) -> Vec3 {
     let a = if n.x.abs() < 0.9 { Vec3::X } else { Vec3::Y };
     (a - n * n.dot(a)).try_normalize().unwrap_or(Vec3::X)
 }
@@ -118,6 +55,7 @@ fn any_perpendicular(n: Vec3) -> Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::compute_tangents;
     use crate::geometry::tests::{check_mesh, procedural};
     use crate::geometry::{Vertex, icosphere, plane, uv_sphere};
 

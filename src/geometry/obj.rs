@@ -1,7 +1,8 @@
 //! Wavefront OBJ loading through tobj, with size limits and errors that name
 //! the file and say what is wrong with it.
 
-use super::normals::{compute_normals, compute_tangents};
+use super::normals::compute_normals;
+use super::tangents::compute_tangents;
 use super::{MeshData, Vertex};
 use crate::assets;
 use anyhow::{Context, Result, anyhow, bail};

@@ -4,7 +4,7 @@
 //! listed in `geometry` and gets its tangents from `normals`.
 
 use super::MeshData;
-use super::normals::compute_tangents;
+use super::tangents::compute_tangents;
 use glam::{Vec2, Vec3};
 use std::collections::HashMap;
 use std::f32::consts::{PI, TAU};

@@ -1,9 +1,9 @@
 //! Meshes on the GPU: a VAO with one interleaved VBO (position, normal, uv
-//! at locations 0-2, 32 bytes a vertex) and an EBO of u32 indices.
-//!
-//! The CPU mesh also has a tangent per vertex (geometry::Vertex), which no
-//! shader reads yet: it stays on the CPU, and the GPU vertex is 16 bytes
-//! smaller for it.
+//! at locations 0-2, 32 bytes a vertex), a second VBO of tangents
+//! (location 3, xyz and the handedness w: bump mapping, notes 01 §8.4) and
+//! an EBO of u32 indices. The tangents have a buffer of their own so that
+//! the skinning pass's transform feedback writes the 32-byte vertices it
+//! always wrote (a skinned mesh keeps its bind pose's tangents).
 
 use super::Gl;
 use crate::geometry::{MeshData, Vertex};
@@ -14,6 +14,7 @@ pub struct Mesh {
     gl: Gl,
     pub vao: glow::VertexArray,
     vbo: glow::Buffer,
+    tangents: glow::Buffer,
     ebo: glow::Buffer,
     pub index_count: i32,
     /// How many vertices the VBO holds.
@@ -93,6 +94,10 @@ impl Mesh {
                 .create_buffer()
                 .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
             super::live::made(super::live::Kind::Buffer);
+            let tangents = gl
+                .create_buffer()
+                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            super::live::made(super::live::Kind::Buffer);
             let ebo = gl
                 .create_buffer()
                 .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
@@ -111,6 +116,11 @@ impl Mesh {
                 gl.enable_vertex_attrib_array(loc);
                 gl.vertex_attrib_pointer_f32(loc, n, glow::FLOAT, false, stride, off);
             }
+            let t: Vec<[f32; 4]> = data.vertices.iter().map(|v| v.tangent).collect();
+            gl.bind_buffer(glow::ARRAY_BUFFER, Some(tangents));
+            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&t), glow::STATIC_DRAW);
+            gl.enable_vertex_attrib_array(3);
+            gl.vertex_attrib_pointer_f32(3, 4, glow::FLOAT, false, 16, 0);
             gl.bind_vertex_array(None);
             gl.bind_buffer(glow::ARRAY_BUFFER, None);
             gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, None);
@@ -118,6 +128,7 @@ impl Mesh {
                 gl: gl.clone(),
                 vao,
                 vbo,
+                tangents,
                 ebo,
                 index_count: data.indices.len() as i32,
                 vertex_count: packed.len() as i32,
@@ -149,6 +160,8 @@ impl Drop for Mesh {
             self.gl.delete_vertex_array(self.vao);
             super::live::freed(super::live::Kind::VertexArray);
             self.gl.delete_buffer(self.vbo);
+            super::live::freed(super::live::Kind::Buffer);
+            self.gl.delete_buffer(self.tangents);
             super::live::freed(super::live::Kind::Buffer);
             self.gl.delete_buffer(self.ebo);
             super::live::freed(super::live::Kind::Buffer);

@@ -123,6 +123,7 @@ pub(super) struct RenderFile {
     pub(super) texture_filter: super::texturing::FilterOverride,
     pub(super) uv_interpolation: super::texturing::UvInterpolation,
     pub(super) mip_colors: bool,
+    pub(super) normal_mapping: bool,
 }
 
 impl Default for RenderFile {
@@ -159,6 +160,7 @@ impl Default for RenderFile {
             texture_filter: super::texturing::FilterOverride::Material,
             uv_interpolation: super::texturing::UvInterpolation::Perspective,
             mip_colors: false,
+            normal_mapping: true,
         }
     }
 }
@@ -233,6 +235,8 @@ pub(super) struct MaterialFile {
     #[serde(default = "grey")]
     pub(super) diffuse: [f32; 3],
     pub(super) diffuse_texture: Option<String>,
+    /// A tangent-space normal map (notes 01 §8.4), loaded as linear data.
+    pub(super) normal_map: Option<String>,
     #[serde(default = "spec_default")]
     pub(super) specular: [f32; 3],
     #[serde(default = "shininess_default")]

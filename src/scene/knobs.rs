@@ -17,7 +17,7 @@ pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, STENCIL_VOLUMES,
     TILE_SIZE,
 };
-pub use texturing::{MIP_COLORS, TEXTURE_FILTER, UV_INTERPOLATION};
+pub use texturing::{MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER, UV_INTERPOLATION};
 
 /// What a knob holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -337,6 +337,7 @@ pub static ALL: &[&Knob] = &[
     &TEXTURE_FILTER,
     &UV_INTERPOLATION,
     &MIP_COLORS,
+    &NORMAL_MAPPING,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,

@@ -139,6 +139,8 @@ pub struct Material {
     pub name: String,
     pub diffuse: Vec3,
     pub diffuse_texture: Option<PathBuf>,
+    /// A tangent-space normal map (notes 01 §8.4): linear RGB, (n + 1) / 2.
+    pub normal_map: Option<PathBuf>,
     pub specular: Vec3,
     pub shininess: f32,
     /// Alpha test on the diffuse texture's alpha: op and reference (notes 05).

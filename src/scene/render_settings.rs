@@ -134,6 +134,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         texture_filter: r.texture_filter,
         uv_interpolation: r.uv_interpolation,
         mip_colors: r.mip_colors,
+        normal_mapping: r.normal_mapping,
     })
 }
 
@@ -207,4 +208,6 @@ pub struct RenderSettings {
     /// Textures read a twin whose mip levels are flat colours: which level
     /// lambda picks, pixel by pixel (notes 01 §5.3).
     pub mip_colors: bool,
+    /// Materials with a normal map perturb their normals with it (notes 01 §8.4).
+    pub normal_mapping: bool,
 }

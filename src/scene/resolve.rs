@@ -109,6 +109,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         name: "default".into(),
         diffuse: Vec3::splat(0.6),
         diffuse_texture: None,
+        normal_map: None,
         specular: Vec3::splat(0.3),
         shininess: 32.0,
         alpha_test: AlphaTest::Always,
@@ -156,21 +157,22 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
                 m.opacity
             );
         }
-        let diffuse_texture = match &m.diffuse_texture {
-            Some(t) => {
-                let p = relative_to(base, t);
-                if let Some(why) = assets::not_a_file(&p) {
-                    bail!("{}: file {} {why}", key("diffuse_texture"), p.display());
-                }
-                Some(p)
+        let texture = |k: &str, t: &Option<String>| -> Result<Option<std::path::PathBuf>> {
+            let Some(t) = t else { return Ok(None) };
+            let p = relative_to(base, t);
+            if let Some(why) = assets::not_a_file(&p) {
+                bail!("{}: file {} {why}", key(k), p.display());
             }
-            None => None,
+            Ok(Some(p))
         };
+        let diffuse_texture = texture("diffuse_texture", &m.diffuse_texture)?;
+        let normal_map = texture("normal_map", &m.normal_map)?;
         material_index.insert(n.clone(), materials.len());
         materials.push(Material {
             name: n.clone(),
             diffuse: Vec3::from(m.diffuse),
             diffuse_texture,
+            normal_map,
             specular: Vec3::from(m.specular),
             shininess: m.shininess,
             alpha_test: m.alpha_test,

@@ -170,8 +170,10 @@ impl Scene {
             .and_then(toml::Value::as_table_mut)
         {
             for (_, m) in materials.iter_mut() {
-                if let Some(t) = m.get_mut("diffuse_texture") {
-                    fix(t);
+                for key in ["diffuse_texture", "normal_map"] {
+                    if let Some(t) = m.get_mut(key) {
+                        fix(t);
+                    }
                 }
             }
         }

@@ -1,6 +1,6 @@
 //! The knobs of texture mapping (notes 01 §5): one filter for every
 //! material, how texture coordinates are interpolated, and the mip levels
-//! shown as colours.
+//! shown as colours; and bump mapping (notes 01 §8.4) on or off.
 
 use super::{Kind, Knob, Value, index};
 use crate::scene::texturing::{FilterOverride, UvInterpolation};
@@ -27,6 +27,19 @@ pub static UV_INTERPOLATION: Knob = Knob {
     set: |r, v| {
         if let Value::Choice(i) = v {
             r.uv_interpolation = UvInterpolation::ALL[i];
+        }
+    },
+};
+
+pub static NORMAL_MAPPING: Knob = Knob {
+    key: "render.normal_mapping",
+    label: "normal maps",
+    help: "materials with a normal_map perturb each fragment's normal with it, through the TBN matrix (notes 01 §8.4); off: the mesh's interpolated normal",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.normal_mapping),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.normal_mapping = b;
         }
     },
 };

@@ -32,6 +32,7 @@
 //! GL state: depth test (render.depth_func, or the material's), depth writes off, blending, culling, glFrontFace
 //! per object, alpha writes off (the image stays opaque); restores all.
 
+use crate::frame::draw_list::DrawList;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -177,6 +178,7 @@ impl RunPasses for Transparency {
             p.set_i32("u_light_count", u.light_count);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
             // Texture coordinates perspective-correct or affine (notes 01 §5.1).
             let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
             p.set_bool("u_affine_uv", affine);
@@ -193,10 +195,9 @@ impl RunPasses for Transparency {
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));
-                // Its texture, and the sampler that says how to read it
-                // (notes 01 §5: the wrap rule per axis, the filter).
-                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d, &f.scene.render));
-                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
+                // Its texture and normal map, with the sampler that says how
+                // to read them (notes 01 §5: wrap rules, filter; §8.4).
+                f.draws.bind_textures(gl, p, d, &f.scene.render);
                 f.draws.set_object_uniforms(p, d);
                 p.set_f32("u_opacity", d.opacity);
                 // Back faces first (the far side), then front faces.
@@ -214,7 +215,7 @@ impl RunPasses for Transparency {
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);
-            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
+            DrawList::unbind_textures(gl);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);

@@ -15,6 +15,7 @@
 //! GL state: step 2 as light_volumes.rs; step 3 sets GL_LEQUAL, depth writes
 //! off, back-face culling, glFrontFace per object, and restores them.
 
+use crate::frame::draw_list::DrawList;
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
@@ -208,6 +209,7 @@ impl DeferredLighting {
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_bool("u_has_light", light.is_some());
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
             // Texture coordinates perspective-correct or affine (notes 01 §5.1).
             let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
             p.set_bool("u_affine_uv", affine);
@@ -235,10 +237,9 @@ impl DeferredLighting {
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));
-                // Its texture, and the sampler that says how to read it
-                // (notes 01 §5: the wrap rule per axis, the filter).
-                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d, &f.scene.render));
-                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
+                // Its texture and normal map, with the sampler that says how
+                // to read them (notes 01 §5: wrap rules, filter; §8.4).
+                f.draws.bind_textures(gl, p, d, &f.scene.render);
                 f.draws.set_object_uniforms(p, d);
                 f.draws.mesh(d).draw();
             }
@@ -250,7 +251,7 @@ impl DeferredLighting {
             }
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
-            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
+            DrawList::unbind_textures(gl);
             gl.bind_texture(glow::TEXTURE_2D, None);
             for u in [unit::LIGHT, unit::SPECULAR_LIGHT] {
                 gl.active_texture(glow::TEXTURE0 + u);

@@ -10,6 +10,7 @@
 //! culling, glFrontFace per object, GL_FRAMEBUFFER_SRGB (albedo and specular
 //! are encoded as they are stored); restores all of them.
 
+use crate::frame::draw_list::DrawList;
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
@@ -126,6 +127,7 @@ impl RunPasses for GBufferPass {
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
             // Texture coordinates perspective-correct or affine (notes 01 §5.1).
             let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
             p.set_bool("u_affine_uv", affine);
@@ -154,10 +156,9 @@ impl RunPasses for GBufferPass {
                 // A mirroring model matrix, or a reflected view, turns
                 // counter-clockwise triangles clockwise.
                 gl.front_face(f.view.front_face(d.mirrored));
-                // Its texture, and the sampler that says how to read it
-                // (notes 01 §5: the wrap rule per axis, the filter).
-                gl.bind_texture(glow::TEXTURE_2D, f.draws.texture(d, &f.scene.render));
-                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
+                // Its texture and normal map, with the sampler that says how
+                // to read them (notes 01 §5: wrap rules, filter; §8.4).
+                f.draws.bind_textures(gl, p, d, &f.scene.render);
                 f.draws.set_object_uniforms(p, d);
                 f.draws.mesh(d).draw();
             }
@@ -168,7 +169,7 @@ impl RunPasses for GBufferPass {
             for i in 0..f.scene.clip_planes.len() as u32 {
                 gl.disable(glow::CLIP_DISTANCE1 + i);
             }
-            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
+            DrawList::unbind_textures(gl);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.disable(glow::FRAMEBUFFER_SRGB);

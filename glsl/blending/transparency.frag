@@ -11,7 +11,7 @@
 
 in vec3 v_position;
 in vec3 v_normal;
-#include "common/texcoord_in.glsl"
+#include "common/surface_in.glsl"
 #include "common/normal_map.glsl"
 
 uniform int u_light_count;
@@ -27,7 +27,7 @@ void main() {
     // A back face (the far wall of a glass sphere) faces the eye from inside.
     if (!gl_FrontFacing) N = -N;
     vec3 V = normalize(u_eye - v_position);
-    vec3 kd = material_diffuse(uv);
+    vec3 kd = material_diffuse(uv) * surface_color();
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
         if (casts_shadow(i)) continue;   // in the loop below

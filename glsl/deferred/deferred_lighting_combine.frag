@@ -7,7 +7,7 @@
 #include "common/lighting_output.glsl"
 in vec3 v_position;
 in vec3 v_normal;
-#include "common/texcoord_in.glsl"
+#include "common/surface_in.glsl"
 uniform sampler2D u_diffuse_light;    // unit::LIGHT
 uniform sampler2D u_specular_light;   // unit::SPECULAR_LIGHT
 uniform bool u_has_light;             // false: no lights, no light pre-pass ran
@@ -23,5 +23,5 @@ void main() {
         D = texture(u_diffuse_light, pixel).rgb;
         S = texture(u_specular_light, pixel).rgb;
     }
-    frag_color = output_color(material_diffuse(uv) * (u_ambient + D) + u_specular * S);
+    frag_color = output_color(material_diffuse(uv) * surface_color() * (u_ambient + D) + u_specular * S);
 }

@@ -9,7 +9,7 @@
 #include "common/alpha_test.glsl"
 in vec3 v_position;
 in vec3 v_normal;
-#include "common/texcoord_in.glsl"
+#include "common/surface_in.glsl"
 #include "common/normal_map.glsl"
 
 layout(location = 0) out vec4 g_normal_shininess;
@@ -21,6 +21,6 @@ void main() {
     alpha_test(material_alpha(uv));
     // The normal after the normal map (notes 01 §8.4) is what the lights read.
     g_normal_shininess = vec4(bumped_normal(safe_normal(v_normal, v_position), uv), u_shininess);
-    g_albedo = vec4(material_diffuse(uv), 1.0);
+    g_albedo = vec4(material_diffuse(uv) * surface_color(), 1.0);
     g_specular = vec4(u_specular, 1.0);
 }

@@ -10,7 +10,7 @@ uniform mat3 u_normal_matrix;
 // The view drawn for: a mirror's clip plane, or a curved mirror's
 // reflection of each vertex (common/view.glsl).
 #include "common/view.glsl"
-#include "common/texcoord.glsl"
+#include "common/surface.glsl"
 #include "common/tangent.glsl"
 
 out vec3 v_position;
@@ -23,7 +23,7 @@ void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
     v_position = world.xyz;
     v_normal = u_normal_matrix * a_normal;
-    write_texcoord(a_uv);
+    write_surface(a_uv);
     write_tangent();
     gl_Position = u_view_projection * view_position(world);
     write_clip_distances(world);

@@ -8,6 +8,7 @@ layout(triangle_strip, max_vertices = 3) out;
 
 in vec3 g_position[];
 in vec2 g_uv[];
+in vec3 g_color[];
 uniform mat4 u_view_projection;
 uniform int u_light_count;
 uniform vec3 u_eye;
@@ -27,6 +28,7 @@ void main() {
     vec3 V = normalize(u_eye - P);
     vec2 uv = (g_uv[0] + g_uv[1] + g_uv[2]) / 3.0;
     vec3 kd = u_has_diffuse_texture ? u_diffuse * textureLod(u_diffuse_texture, uv, 0.0).rgb : u_diffuse;
+    kd *= (g_color[0] + g_color[1] + g_color[2]) / 3.0;   // the vertex colours' mean
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
         c += phong(u_lights[i], P, N, V, kd, u_specular, u_shininess);

@@ -5,14 +5,14 @@
 #include "common/alpha_test.glsl"
 in vec3 v_diffuse_light;
 in vec3 v_specular_light;
-#include "common/texcoord_in.glsl"
+#include "common/surface_in.glsl"
 uniform vec3 u_ambient;
 out vec4 frag_color;
 
 void main() {
     vec2 uv = surface_uv();
     alpha_test(material_alpha(uv));
-    vec3 kd = material_diffuse(uv);
+    vec3 kd = material_diffuse(uv) * surface_color();
     vec3 c = kd * (u_ambient + v_diffuse_light) + u_specular * v_specular_light;
     frag_color = output_color(c);
 }

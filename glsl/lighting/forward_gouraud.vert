@@ -13,7 +13,7 @@ uniform mat3 u_normal_matrix;
 // The view drawn for: a mirror's clip plane, or a curved mirror's
 // reflection of each vertex (common/view.glsl).
 #include "common/view.glsl"
-#include "common/texcoord.glsl"
+#include "common/surface.glsl"
 uniform int u_light_count;
 uniform vec3 u_eye;
 uniform float u_shininess;
@@ -34,7 +34,7 @@ void main() {
         v_diffuse_light += d;
         v_specular_light += s;
     }
-    write_texcoord(a_uv);
+    write_surface(a_uv);
     gl_Position = u_view_projection * view_position(world);
     write_clip_distances(world);
 }

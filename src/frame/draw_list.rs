@@ -17,10 +17,9 @@ use crate::gl::texture::{Sampling, Texture};
 use crate::math;
 use crate::math::frustum::Frustum;
 use crate::scene::texturing::Texturing;
-use crate::scene::{Cull, DepthFunc, MeshSource, RenderSettings, Scene, Winding};
+use crate::scene::{Cull, DepthFunc, MeshSource, Scene, Winding};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
-use glow::HasContext;
 use std::cell::Cell;
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -287,69 +286,6 @@ impl DrawList {
 
     pub fn mesh(&self, d: &DrawItem) -> &Mesh {
         &self.meshes[d.mesh]
-    }
-
-    /// The object's diffuse texture, if its material has one; with
-    /// `render.mip_colors`, the twin of its size whose levels are colours.
-    pub fn texture(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Texture> {
-        let t = &self.textures[d.texture?];
-        if r.mip_colors {
-            self.samplers.twin(t)
-        } else {
-            Some(t.id)
-        }
-    }
-
-    /// The sampler object the object's texture is read with under `r`
-    /// (glBindSampler on the diffuse texture's unit).
-    pub fn sampler(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Sampler> {
-        d.texture.or(d.normal_map)?;
-        self.samplers.sampler(&d.texturing, r)
-    }
-
-    /// The object's normal map, if its material has one and
-    /// `render.normal_mapping` is on.
-    pub fn normal_map(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Texture> {
-        let t = d.normal_map.filter(|_| r.normal_mapping)?;
-        Some(self.textures[t].id)
-    }
-
-    /// A geometry pass's per-object texture binds (notes 01 §5, §8.4): the
-    /// diffuse texture on unit DIFFUSE_TEXTURE and the normal map on unit
-    /// NORMAL_MAP, each with the material's sampler object (the wrap rule
-    /// per axis and the filter), in this order:
-    ///
-    /// glActiveTexture(NORMAL_MAP); glBindTexture; glBindSampler;
-    /// glActiveTexture(DIFFUSE_TEXTURE); glBindTexture; glBindSampler;
-    ///
-    /// and `u_has_normal_map` for program `p`. Unit DIFFUSE_TEXTURE is left
-    /// active; `unbind_textures` undoes it all.
-    pub fn bind_textures(&self, gl: &glow::Context, p: &Program, d: &DrawItem, r: &RenderSettings) {
-        use crate::frame::uniforms::unit;
-        let sampler = self.sampler(d, r);
-        let normal_map = self.normal_map(d, r);
-        unsafe {
-            gl.active_texture(glow::TEXTURE0 + unit::NORMAL_MAP);
-            gl.bind_texture(glow::TEXTURE_2D, normal_map);
-            gl.bind_sampler(unit::NORMAL_MAP, sampler);
-            gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-            gl.bind_texture(glow::TEXTURE_2D, self.texture(d, r));
-            gl.bind_sampler(unit::DIFFUSE_TEXTURE, sampler);
-        }
-        p.set_bool("u_has_normal_map", normal_map.is_some());
-    }
-
-    /// Unbind what `bind_textures` bound; unit 0 is left active.
-    pub fn unbind_textures(gl: &glow::Context) {
-        use crate::frame::uniforms::unit;
-        unsafe {
-            for u in [unit::NORMAL_MAP, unit::DIFFUSE_TEXTURE] {
-                gl.active_texture(glow::TEXTURE0 + u);
-                gl.bind_texture(glow::TEXTURE_2D, None);
-                gl.bind_sampler(u, None);
-            }
-            gl.active_texture(glow::TEXTURE0);
-        }
     }
 
     /// glUniform* for one object's transform and material (program `p` in use).

@@ -24,6 +24,7 @@ pub mod check;
 pub mod clusters;
 pub mod culling;
 pub mod draw_list;
+pub mod draw_textures;
 pub mod gbuffer;
 pub mod lights;
 pub mod meshes;

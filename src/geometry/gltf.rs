@@ -230,7 +230,12 @@ pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<S
     if !has_normals {
         compute_normals(&mut data);
     }
-    compute_tangents(&mut data);
+    // A vertex on a mirror seam of the uvs is split in two: its copy
+    // takes the same joints and weights.
+    for source in compute_tangents(&mut data) {
+        joints.push(joints[source]);
+        weights.push(weights[source]);
+    }
 
     let nodes = read_nodes(&file, name)?;
     let inverse_bind: Vec<Mat4> = match skin.reader(get).read_inverse_bind_matrices() {

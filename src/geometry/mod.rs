@@ -63,6 +63,9 @@ pub struct Vertex {
 pub struct MeshData {
     pub vertices: Vec<Vertex>,
     pub indices: Vec<u32>,
+    /// Linear RGB per vertex (notes 01 §4.1), from an OBJ's `v x y z r g b`
+    /// lines: empty when the mesh has none (the GPU then reads white).
+    pub colors: Vec<[f32; 3]>,
 }
 
 impl MeshData {

@@ -90,6 +90,7 @@ mod tests {
                 })
                 .collect(),
             indices: vec![0, 1, 2],
+            ..Default::default()
         };
         compute_normals(&mut m);
         compute_tangents(&mut m);
@@ -159,6 +160,7 @@ mod tests {
             })
             .collect(),
             indices: vec![0, 1, 2, 0, 3, 4],
+            ..Default::default()
         };
         compute_normals(&mut m);
         compute_tangents(&mut m);

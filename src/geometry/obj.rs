@@ -112,7 +112,9 @@ fn load_obj_limited(path: &Path, max_bytes: u64, max_vertices: usize) -> Result<
                 "OBJ file {name}: object '{object}' has face index {bad} out of range ({n} vertices)"
             );
         }
+        finite(&m.vertex_color, "vertex colour")?;
         let has_normals = m.normals.len() == m.positions.len();
+        let has_colors = m.vertex_color.len() == m.positions.len();
         let has_uvs = m.texcoords.len() == 2 * n;
         let mut part = MeshData {
             vertices: (0..n)
@@ -136,9 +138,24 @@ fn load_obj_limited(path: &Path, max_bytes: u64, max_vertices: usize) -> Result<
                 })
                 .collect(),
             indices: m.indices.clone(),
+            colors: if has_colors {
+                m.vertex_color
+                    .chunks_exact(3)
+                    .map(|c| [c[0], c[1], c[2]])
+                    .collect()
+            } else {
+                Vec::new()
+            },
         };
         if !has_normals {
             compute_normals(&mut part);
+        }
+        // Colours for every vertex once any object has them (white for the others).
+        if !part.colors.is_empty() || !mesh.colors.is_empty() {
+            mesh.colors.resize(mesh.vertices.len(), [1.0; 3]);
+            let mut c = std::mem::take(&mut part.colors);
+            c.resize(part.vertices.len(), [1.0; 3]);
+            mesh.colors.extend(c);
         }
         let offset = mesh.vertices.len() as u32;
         for mut v in part.vertices {

@@ -25,7 +25,12 @@ use glam::Vec3;
 /// with zero uv area and no neighbour to borrow from, a mesh without uvs)
 /// gets some unit vector perpendicular to its normal, w = +1: never NaN.
 /// Normals should be set first.
-pub fn compute_tangents(mesh: &mut MeshData) {
+///
+/// Returns, for each vertex it added (at the end, in order), the vertex it
+/// copies: a caller with data of its own per vertex (a skin's joints and
+/// weights) copies that data likewise.
+pub fn compute_tangents(mesh: &mut MeshData) -> Vec<usize> {
+    let mut added = Vec::new();
     let mut corners = Corners {
         mesh,
         tangents: Vec::new(),
@@ -62,6 +67,10 @@ pub fn compute_tangents(mesh: &mut MeshData) {
             Some(_) => {
                 let v = mesh.vertices[i];
                 mesh.vertices.push(v);
+                if let Some(&c) = mesh.colors.get(i) {
+                    mesh.colors.push(c);
+                }
+                added.push(i);
                 given.push(Some((dir, w)));
                 mesh.indices[corner] = (mesh.vertices.len() - 1) as u32;
             }
@@ -77,6 +86,7 @@ pub fn compute_tangents(mesh: &mut MeshData) {
             None => fallback(v.normal),
         };
     }
+    added
 }
 
 /// The mesh as MikkTSpace sees it: triangles of corners, and a frame per corner.

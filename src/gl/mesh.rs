@@ -1,7 +1,8 @@
 //! Meshes on the GPU: a VAO with one interleaved VBO (position, normal, uv
 //! at locations 0-2, 32 bytes a vertex), a second VBO of tangents
-//! (location 3, xyz and the handedness w: bump mapping, notes 01 §8.4) and
-//! an EBO of u32 indices. The tangents have a buffer of their own so that
+//! (location 3, xyz and the handedness w: bump mapping, notes 01 §8.4), a
+//! third of vertex colours (location 4, RGB, white where the mesh has none:
+//! notes 01 §4.1) and an EBO of u32 indices. The tangents have a buffer of their own so that
 //! the skinning pass's transform feedback writes the 32-byte vertices it
 //! always wrote (a skinned mesh keeps its bind pose's tangents).
 
@@ -15,6 +16,7 @@ pub struct Mesh {
     pub vao: glow::VertexArray,
     vbo: glow::Buffer,
     tangents: glow::Buffer,
+    colors: glow::Buffer,
     ebo: glow::Buffer,
     pub index_count: i32,
     /// How many vertices the VBO holds.
@@ -98,6 +100,10 @@ impl Mesh {
                 .create_buffer()
                 .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
             super::live::made(super::live::Kind::Buffer);
+            let colors = gl
+                .create_buffer()
+                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
+            super::live::made(super::live::Kind::Buffer);
             let ebo = gl
                 .create_buffer()
                 .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
@@ -121,6 +127,12 @@ impl Mesh {
             gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&t), glow::STATIC_DRAW);
             gl.enable_vertex_attrib_array(3);
             gl.vertex_attrib_pointer_f32(3, 4, glow::FLOAT, false, 16, 0);
+            let mut c = data.colors.clone();
+            c.resize(data.vertices.len(), [1.0; 3]);
+            gl.bind_buffer(glow::ARRAY_BUFFER, Some(colors));
+            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&c), glow::STATIC_DRAW);
+            gl.enable_vertex_attrib_array(4);
+            gl.vertex_attrib_pointer_f32(4, 3, glow::FLOAT, false, 12, 0);
             gl.bind_vertex_array(None);
             gl.bind_buffer(glow::ARRAY_BUFFER, None);
             gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, None);
@@ -129,6 +141,7 @@ impl Mesh {
                 vao,
                 vbo,
                 tangents,
+                colors,
                 ebo,
                 index_count: data.indices.len() as i32,
                 vertex_count: packed.len() as i32,
@@ -162,6 +175,8 @@ impl Drop for Mesh {
             self.gl.delete_buffer(self.vbo);
             super::live::freed(super::live::Kind::Buffer);
             self.gl.delete_buffer(self.tangents);
+            super::live::freed(super::live::Kind::Buffer);
+            self.gl.delete_buffer(self.colors);
             super::live::freed(super::live::Kind::Buffer);
             self.gl.delete_buffer(self.ebo);
             super::live::freed(super::live::Kind::Buffer);

@@ -121,7 +121,7 @@ pub(super) struct RenderFile {
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
     pub(super) texture_filter: super::texturing::FilterOverride,
-    pub(super) uv_interpolation: super::texturing::UvInterpolation,
+    pub(super) interpolation: super::texturing::Interpolation,
     pub(super) mip_colors: bool,
     pub(super) normal_mapping: bool,
 }
@@ -158,7 +158,7 @@ impl Default for RenderFile {
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
             texture_filter: super::texturing::FilterOverride::Material,
-            uv_interpolation: super::texturing::UvInterpolation::Perspective,
+            interpolation: super::texturing::Interpolation::Perspective,
             mip_colors: false,
             normal_mapping: true,
         }

@@ -17,7 +17,7 @@ pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, STENCIL_VOLUMES,
     TILE_SIZE,
 };
-pub use texturing::{MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER, UV_INTERPOLATION};
+pub use texturing::{INTERPOLATION, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
 /// What a knob holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -335,7 +335,7 @@ pub static ALL: &[&Knob] = &[
     &FRUSTUM_CULLING,
     &WIREFRAME,
     &TEXTURE_FILTER,
-    &UV_INTERPOLATION,
+    &INTERPOLATION,
     &MIP_COLORS,
     &NORMAL_MAPPING,
     &POST_CHAIN,

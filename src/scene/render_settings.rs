@@ -7,7 +7,7 @@ use super::settings::{
     Accumulation, BillboardMode, DeferredLights, DepthFunc, Falloff, JointStorage, MirrorOrder,
     RenderPath, Shading, SkinningOn,
 };
-use super::texturing::{FilterOverride, UvInterpolation};
+use super::texturing::{FilterOverride, Interpolation};
 use anyhow::{Result, bail};
 use glam::Vec3;
 
@@ -132,7 +132,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         skinning_on: r.skinning_on,
         joint_storage: r.joint_storage,
         texture_filter: r.texture_filter,
-        uv_interpolation: r.uv_interpolation,
+        interpolation: r.interpolation,
         mip_colors: r.mip_colors,
         normal_mapping: r.normal_mapping,
     })
@@ -204,7 +204,7 @@ pub struct RenderSettings {
     /// Every material's texture filter, or one for all (notes 01 §5.2-5.3.1).
     pub texture_filter: FilterOverride,
     /// Texture coordinates perspective-correct, or affine (notes 01 §5.1).
-    pub uv_interpolation: UvInterpolation,
+    pub interpolation: Interpolation,
     /// Textures read a twin whose mip levels are flat colours: which level
     /// lambda picks, pixel by pixel (notes 01 §5.3).
     pub mip_colors: bool,

@@ -115,8 +115,8 @@ impl FilterOverride {
 }
 
 setting! {
-    /// How texture coordinates cross a triangle (notes 01 §5.1).
-    pub enum UvInterpolation {
+    /// How texture coordinates and vertex colours cross a triangle (notes 01 §4.1, §5.1).
+    pub enum Interpolation {
         /// Divided by w, interpolated, multiplied back: right under perspective.
         Perspective = "perspective",
         /// Linear in screen space (GLSL `noperspective`): the tilted-plane artefact.

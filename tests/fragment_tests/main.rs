@@ -15,4 +15,5 @@ mod common;
 
 mod depth_func;
 mod depth_precision;
+mod interpolation;
 mod viewports;

@@ -3,7 +3,7 @@
 //! shown as colours; and bump mapping (notes 01 §8.4) on or off.
 
 use super::{Kind, Knob, Value, index};
-use crate::scene::texturing::{FilterOverride, UvInterpolation};
+use crate::scene::texturing::{FilterOverride, Interpolation};
 
 pub static TEXTURE_FILTER: Knob = Knob {
     key: "render.texture_filter",
@@ -18,15 +18,15 @@ pub static TEXTURE_FILTER: Knob = Knob {
     },
 };
 
-pub static UV_INTERPOLATION: Knob = Knob {
-    key: "render.uv_interpolation",
-    label: "texture coordinates",
-    help: "perspective: divided by w, interpolated, multiplied back (§5.1); affine: linear across the screen (GLSL noperspective), which bends a tilted texture",
-    kind: Kind::Choice(UvInterpolation::WORDS),
-    get: |r| Value::Choice(index(UvInterpolation::ALL, r.uv_interpolation)),
+pub static INTERPOLATION: Knob = Knob {
+    key: "render.interpolation",
+    label: "interpolation",
+    help: "texture coordinates and vertex colours: perspective-correct (divided by w, interpolated, multiplied back: §4.1, §5.1), or affine, linear across the screen (GLSL noperspective), which bends a tilted texture",
+    kind: Kind::Choice(Interpolation::WORDS),
+    get: |r| Value::Choice(index(Interpolation::ALL, r.interpolation)),
     set: |r, v| {
         if let Value::Choice(i) = v {
-            r.uv_interpolation = UvInterpolation::ALL[i];
+            r.interpolation = Interpolation::ALL[i];
         }
     },
 };

@@ -43,7 +43,7 @@ use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::Scene;
 use crate::scene::knobs;
-use crate::scene::texturing::UvInterpolation;
+use crate::scene::texturing::Interpolation;
 use anyhow::Result;
 use glam::{Mat4, Vec3};
 use glow::HasContext;
@@ -179,9 +179,10 @@ impl RunPasses for Transparency {
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            // Texture coordinates perspective-correct or affine (notes 01 §5.1).
-            let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
-            p.set_bool("u_affine_uv", affine);
+            // Texture coordinates and vertex colours perspective-correct or
+            // affine (notes 01 §4.1, §5.1).
+            let affine = f.scene.render.interpolation == Interpolation::Affine;
+            p.set_bool("u_affine", affine);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             f.shadows.bind(gl);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);

@@ -26,7 +26,7 @@ use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
-use crate::scene::texturing::UvInterpolation;
+use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
 use crate::techniques::deferred::light_volumes::{draw_bounded_volumes, volume_pass};
 use anyhow::Result;
@@ -210,9 +210,10 @@ impl DeferredLighting {
             p.set_bool("u_has_light", light.is_some());
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            // Texture coordinates perspective-correct or affine (notes 01 §5.1).
-            let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
-            p.set_bool("u_affine_uv", affine);
+            // Texture coordinates and vertex colours perspective-correct or
+            // affine (notes 01 §4.1, §5.1).
+            let affine = f.scene.render.interpolation == Interpolation::Affine;
+            p.set_bool("u_affine", affine);
             p.set_i32("u_diffuse_light", unit::LIGHT as i32);
             p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
             f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);

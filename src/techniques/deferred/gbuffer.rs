@@ -19,7 +19,7 @@ use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
-use crate::scene::texturing::UvInterpolation;
+use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 use glow::HasContext;
@@ -128,9 +128,10 @@ impl RunPasses for GBufferPass {
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            // Texture coordinates perspective-correct or affine (notes 01 §5.1).
-            let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
-            p.set_bool("u_affine_uv", affine);
+            // Texture coordinates and vertex colours perspective-correct or
+            // affine (notes 01 §4.1, §5.1).
+            let affine = f.scene.render.interpolation == Interpolation::Affine;
+            p.set_bool("u_affine", affine);
             f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             let mut depth_func = f.scene.render.depth_func;

@@ -31,7 +31,7 @@ use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
-use crate::scene::texturing::UvInterpolation;
+use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene, Shading};
 use anyhow::Result;
 use glow::HasContext;
@@ -56,7 +56,7 @@ pub const FORWARD: Technique = Technique {
         &knobs::WIREFRAME,
         // Texture mapping (notes 01 §5): every geometry pass reads these.
         &knobs::TEXTURE_FILTER,
-        &knobs::UV_INTERPOLATION,
+        &knobs::INTERPOLATION,
         &knobs::MIP_COLORS,
         // Bump mapping (notes 01 §8.4), forward and into the G-buffer.
         &knobs::NORMAL_MAPPING,
@@ -182,9 +182,10 @@ impl RunPasses for Forward {
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            // Texture coordinates perspective-correct or affine (notes 01 §5.1).
-            let affine = f.scene.render.uv_interpolation == UvInterpolation::Affine;
-            p.set_bool("u_affine_uv", affine);
+            // Texture coordinates and vertex colours perspective-correct or
+            // affine (notes 01 §4.1, §5.1).
+            let affine = f.scene.render.interpolation == Interpolation::Affine;
+            p.set_bool("u_affine", affine);
             f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             f.shadows.bind(gl);

@@ -15,6 +15,8 @@ in vec3 v_normal;
 uniform int u_light_count;
 uniform vec3 u_eye;
 uniform vec3 u_ambient;
+uniform bool u_has_light_map;
+uniform sampler2D u_light_map;   // unit::LIGHT_MAP: linear RGB, RGBA16F
 
 out vec4 frag_color;
 
@@ -24,6 +26,13 @@ void main() {
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 V = normalize(u_eye - v_position);
     vec3 kd = material_diffuse(uv) * surface_color();
+    // Static lighting (notes 01 §8.2): the diffuse light baked when the
+    // scene loaded, read over the mesh's own uvs; no light loop.
+    if (u_has_light_map) {
+        vec2 mesh_uv = (uv - u_uv_transform.zw) / u_uv_transform.xy;
+        frag_color = output_color(kd * (u_ambient + texture(u_light_map, mesh_uv).rgb));
+        return;
+    }
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
         if (casts_shadow(i)) continue;   // in the loop below

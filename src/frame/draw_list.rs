@@ -41,6 +41,8 @@ pub struct DrawItem {
     pub texture: Option<usize>,
     /// The material's normal map (notes 01 §8.4), if it has one.
     pub normal_map: Option<usize>,
+    /// The object's baked light map (notes 01 §8.2), if it has one.
+    pub light_map: Option<usize>,
     /// How the texture is sampled, and the uv transform (notes 01 §5).
     pub texturing: Texturing,
     /// The object is a mirror: the mirror technique draws it (stencil/mirror.rs),
@@ -98,7 +100,9 @@ impl DrawList {
         let mut items = Vec::new();
         let mut bounds = Vec::new();
         let mut skins = Vec::new();
-        for o in &scene.objects {
+        // Static lighting: the light maps, baked now (src/frame/draw_textures.rs).
+        let mut light_maps = super::draw_textures::bake_light_maps(gl, scene)?;
+        for (object, o) in scene.objects.iter().enumerate() {
             let mesh = match mesh_index.get(&o.mesh) {
                 // A skinned object poses its own copy of the skin.
                 _ if o.skin.is_some() => {
@@ -152,6 +156,10 @@ impl DrawList {
                 shininess: m.shininess,
                 texture,
                 normal_map,
+                light_map: light_maps[object].take().map(|t| {
+                    textures.push(t);
+                    textures.len() - 1
+                }),
                 texturing: m.texturing,
                 mirror: o.mirror.is_some(),
                 roughness,

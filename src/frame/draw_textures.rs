@@ -1,12 +1,55 @@
-//! A geometry pass's textures for one object (notes 01 §5, §8.4): the
-//! diffuse texture (or its mip-colour twin), the normal map, and the
-//! sampler object that says how to read them.
+//! A geometry pass's textures for one object (notes 01 §5, §8.4, §8.2): the
+//! diffuse texture (or its mip-colour twin), the normal map, the sampler
+//! object that says how to read them, and the light map; and the light
+//! maps' bake when the scene loads.
 
 use crate::frame::draw_list::{DrawItem, DrawList};
 use crate::frame::uniforms::unit;
+use crate::gl::Gl;
 use crate::gl::program::Program;
-use crate::scene::RenderSettings;
+use crate::gl::texture::{Sampling, Texture};
+use crate::lighting::shadow_reference::SceneTriangles;
+use crate::lighting::static_lighting;
+use crate::scene::meshes::mesh_data;
+use crate::scene::{RenderSettings, Scene};
+use anyhow::{Context as _, Result};
 use glow::HasContext;
+
+/// Each object's light map (notes 01 §8.2), baked on the CPU
+/// (src/lighting/static_lighting.rs) and uploaded as GL_RGBA16F; None for
+/// an object without `light_map`.
+pub fn bake_light_maps(gl: &Gl, scene: &Scene) -> Result<Vec<Option<Texture>>> {
+    let shadows = scene
+        .objects
+        .iter()
+        .any(|o| o.light_map.is_some_and(|l| l.shadows));
+    let occluders = if shadows {
+        Some(SceneTriangles::new(scene)?)
+    } else {
+        None
+    };
+    let mut maps = Vec::new();
+    for (i, o) in scene.objects.iter().enumerate() {
+        let Some(l) = o.light_map else {
+            maps.push(None);
+            continue;
+        };
+        let mesh = mesh_data(&o.mesh)?;
+        let occluders = occluders.as_ref().filter(|_| l.shadows);
+        let baked = static_lighting::bake(scene, i, &mesh, l.size, occluders);
+        if baked.overlaps > 0 {
+            eprintln!(
+                "gloss: warning: object {}'s uvs overlap ({} light-map texels lie in two triangles): the light map holds one of them",
+                o.name, baked.overlaps
+            );
+        }
+        let rgb: Vec<f32> = baked.texels.iter().flatten().copied().collect();
+        let t = Texture::from_rgb_f32(gl, l.size, l.size, &rgb, Sampling::BILINEAR_CLAMP)
+            .with_context(|| format!("the light map of object {}", o.name))?;
+        maps.push(Some(t));
+    }
+    Ok(maps)
+}
 
 impl DrawList {
     /// The object's diffuse texture, if its material has one; with
@@ -37,17 +80,25 @@ impl DrawList {
     /// A geometry pass's per-object texture binds (notes 01 §5, §8.4): the
     /// diffuse texture on unit DIFFUSE_TEXTURE and the normal map on unit
     /// NORMAL_MAP, each with the material's sampler object (the wrap rule
-    /// per axis and the filter), in this order:
+    /// per axis and the filter), and the light map on LIGHT_MAP (its own
+    /// bilinear, clamped parameters), in this order:
     ///
+    /// glActiveTexture(LIGHT_MAP); glBindTexture;
     /// glActiveTexture(NORMAL_MAP); glBindTexture; glBindSampler;
     /// glActiveTexture(DIFFUSE_TEXTURE); glBindTexture; glBindSampler;
     ///
-    /// and `u_has_normal_map` for program `p`. Unit DIFFUSE_TEXTURE is left
+    /// and `u_has_normal_map`, `u_has_light_map` for program `p`. Unit DIFFUSE_TEXTURE is left
     /// active; `unbind_textures` undoes it all.
     pub fn bind_textures(&self, gl: &glow::Context, p: &Program, d: &DrawItem, r: &RenderSettings) {
         let sampler = self.sampler(d, r);
         let normal_map = self.normal_map(d, r);
+        let light_map = d
+            .light_map
+            .filter(|_| r.light_maps)
+            .map(|t| self.textures[t].id);
         unsafe {
+            gl.active_texture(glow::TEXTURE0 + unit::LIGHT_MAP);
+            gl.bind_texture(glow::TEXTURE_2D, light_map);
             gl.active_texture(glow::TEXTURE0 + unit::NORMAL_MAP);
             gl.bind_texture(glow::TEXTURE_2D, normal_map);
             gl.bind_sampler(unit::NORMAL_MAP, sampler);
@@ -56,12 +107,13 @@ impl DrawList {
             gl.bind_sampler(unit::DIFFUSE_TEXTURE, sampler);
         }
         p.set_bool("u_has_normal_map", normal_map.is_some());
+        p.set_bool("u_has_light_map", light_map.is_some());
     }
 
     /// Unbind what `bind_textures` bound; unit 0 is left active.
     pub fn unbind_textures(gl: &glow::Context) {
         unsafe {
-            for u in [unit::NORMAL_MAP, unit::DIFFUSE_TEXTURE] {
+            for u in [unit::LIGHT_MAP, unit::NORMAL_MAP, unit::DIFFUSE_TEXTURE] {
                 gl.active_texture(glow::TEXTURE0 + u);
                 gl.bind_texture(glow::TEXTURE_2D, None);
                 gl.bind_sampler(u, None);

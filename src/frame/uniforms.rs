@@ -39,6 +39,8 @@ pub mod unit {
     pub const DIFFUSE_TEXTURE: u32 = 0;
     /// Geometry passes: the material's normal map (`u_normal_map`, notes 01 §8.4).
     pub const NORMAL_MAP: u32 = 1;
+    /// The forward pass: an object's baked light map (`u_light_map`, notes 01 §8.2).
+    pub const LIGHT_MAP: u32 = 2;
     /// Lighting passes read the G-buffer (`glsl/common/gbuffer_read.glsl`).
     pub const GBUFFER_NORMAL: u32 = 0;
     pub const GBUFFER_ALBEDO: u32 = 1;

@@ -7,6 +7,8 @@ use std::path::Path;
 
 pub use super::image_file::{MAX_TEXTURE_SIDE, load_rgba8};
 
+mod upload;
+
 /// Wrap and filter settings (glTexParameteri), set when the texture is made.
 #[derive(Clone, Copy, Debug)]
 pub struct Sampling {
@@ -27,6 +29,12 @@ impl Sampling {
         wrap: glow::CLAMP_TO_EDGE,
         min_filter: glow::NEAREST,
         mag_filter: glow::NEAREST,
+    };
+    /// Bilinear within level 0, clamped: a light map.
+    pub const BILINEAR_CLAMP: Sampling = Sampling {
+        wrap: glow::CLAMP_TO_EDGE,
+        min_filter: glow::LINEAR,
+        mag_filter: glow::LINEAR,
     };
 }
 
@@ -199,27 +207,6 @@ impl Texture {
     pub fn load(gl: &Gl, path: &Path, srgb: bool, sampling: Sampling) -> Result<Texture> {
         let img = load_rgba8(path)?;
         Texture::from_rgba8(gl, img.width(), img.height(), img.as_raw(), srgb, sampling)
-    }
-
-    /// Replace mip level `level` (`width` x `height`, RGBA8) with glTexImage2D.
-    pub fn upload_level(&self, level: u32, width: i32, height: i32, pixels: &[u8]) {
-        unsafe {
-            self.gl.bind_texture(glow::TEXTURE_2D, Some(self.id));
-            self.gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
-            self.gl.tex_image_2d(
-                glow::TEXTURE_2D,
-                level as i32,
-                self.internal_format as i32,
-                width,
-                height,
-                0,
-                glow::RGBA,
-                glow::UNSIGNED_BYTE,
-                PixelUnpackData::Slice(Some(pixels)),
-            );
-            self.gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 4);
-            self.gl.bind_texture(glow::TEXTURE_2D, None);
-        }
     }
 }
 

@@ -9,6 +9,7 @@
 pub mod attenuation;
 pub mod bvh;
 pub mod shadow_reference;
+pub mod static_lighting;
 pub mod tonemap;
 pub mod triangle;
 pub mod window;

@@ -124,6 +124,7 @@ pub(super) struct RenderFile {
     pub(super) interpolation: super::texturing::Interpolation,
     pub(super) mip_colors: bool,
     pub(super) normal_mapping: bool,
+    pub(super) light_maps: bool,
 }
 
 impl Default for RenderFile {
@@ -161,6 +162,7 @@ impl Default for RenderFile {
             interpolation: super::texturing::Interpolation::Perspective,
             mip_colors: false,
             normal_mapping: true,
+            light_maps: true,
         }
     }
 }
@@ -304,6 +306,18 @@ pub(super) struct ObjectFile {
     /// A skinned glTF mesh: the animation that poses it (default: the
     /// file's first; "none": the rest pose).
     pub(super) clip: Option<String>,
+    /// Static lighting (notes 01 §8.2): bake the scene's lights into a
+    /// light map over the mesh's uvs when the scene loads.
+    pub(super) light_map: Option<LightMapFile>,
+}
+
+/// `light_map = { size = 256, shadows = true }` on an object.
+#[derive(Deserialize, Debug, Clone, Copy)]
+#[serde(deny_unknown_fields)]
+pub(super) struct LightMapFile {
+    pub(super) size: u32,
+    #[serde(default)]
+    pub(super) shadows: bool,
 }
 
 fn unit_scale() -> [f32; 3] {

@@ -17,7 +17,7 @@ pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, STENCIL_VOLUMES,
     TILE_SIZE,
 };
-pub use texturing::{INTERPOLATION, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
+pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
 /// What a knob holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -338,6 +338,7 @@ pub static ALL: &[&Knob] = &[
     &INTERPOLATION,
     &MIP_COLORS,
     &NORMAL_MAPPING,
+    &LIGHT_MAPS,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,

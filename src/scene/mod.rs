@@ -205,7 +205,19 @@ pub struct Object {
     pub orientation: Option<glam::Quat>,
     /// A skinned mesh's skin, skeleton, clip and method (mesh = a glTF file).
     pub skin: Option<skins::ObjectSkin>,
+    /// Static lighting (notes 01 §8.2): the light map to bake at load.
+    pub light_map: Option<LightMapSettings>,
 }
+
+/// An object's light map: texels a side, and whether the bake casts shadow rays.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightMapSettings {
+    pub size: u32,
+    pub shadows: bool,
+}
+
+/// The largest light map side.
+pub const MAX_LIGHT_MAP: u32 = 2048;
 
 impl Object {
     /// T * Rz * Ry * Rx * S (column vectors: scale first, then rotate about

@@ -160,5 +160,6 @@ fn object(
         mirror: None,
         skinning: None,
         clip: None,
+        light_map: None,
     }
 }

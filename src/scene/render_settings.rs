@@ -135,6 +135,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         interpolation: r.interpolation,
         mip_colors: r.mip_colors,
         normal_mapping: r.normal_mapping,
+        light_maps: r.light_maps,
     })
 }
 
@@ -210,4 +211,6 @@ pub struct RenderSettings {
     pub mip_colors: bool,
     /// Materials with a normal map perturb their normals with it (notes 01 §8.4).
     pub normal_mapping: bool,
+    /// Objects with a light map draw it instead of their light loop (notes 01 §8.2).
+    pub light_maps: bool,
 }

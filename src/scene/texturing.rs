@@ -179,6 +179,12 @@ pub(super) fn texturing(name: &str, f: &MaterialFile) -> Result<Texturing> {
                     key(k)
                 );
             }
+            if k == "uv_scale" && v.contains(&0.0) {
+                bail!(
+                    "{}: a scale of 0 squeezes the texture to one texel; expected nonzero numbers, found {v:?}",
+                    key(k)
+                );
+            }
             *out = v;
         }
     }

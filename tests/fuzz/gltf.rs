@@ -18,7 +18,7 @@ fn json_end() -> usize {
     20 + u32::from_le_bytes(arm()[12..16].try_into().unwrap()) as usize
 }
 
-fn check(bytes: &[u8]) -> Result<(), TestCaseError> {
+pub fn check(bytes: &[u8]) -> Result<(), TestCaseError> {
     let path = scratch("case.glb");
     std::fs::write(&path, bytes).expect("write the case");
     match gloss::geometry::load_gltf(&path) {

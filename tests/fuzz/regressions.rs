@@ -5,7 +5,7 @@
 //! * `scene-*/`: a scene file, read as if it lay in scenes/ (so that
 //!   `assets/...` paths resolve); leading `# --set KEY=VALUE` lines are
 //!   overrides.
-//! * `obj-*/`, `png-*/`: the file's bytes.
+//! * `obj-*/`, `png-*/`, `gltf-*/`: the file's bytes.
 //! * `cli/`: one argument a line.
 
 use crate::root;
@@ -48,6 +48,8 @@ fn every_kept_input_still_holds() {
             crate::obj::check(&bytes)
         } else if kind.starts_with("png") {
             crate::png::check(&bytes)
+        } else if kind.starts_with("gltf") {
+            crate::gltf::check(&bytes)
         } else if kind == "cli" {
             let args: Vec<String> = String::from_utf8_lossy(&bytes)
                 .lines()
@@ -64,7 +66,13 @@ fn every_kept_input_still_holds() {
     }
     assert!(failed.is_empty(), "{}", failed.join("\n"));
     // The folders are there and hold something for each kind of input.
-    for kind in ["scene-mutated", "obj-shaped", "png-mutated", "cli"] {
+    for kind in [
+        "scene-mutated",
+        "obj-shaped",
+        "png-mutated",
+        "gltf-mutated",
+        "cli",
+    ] {
         assert!(kinds.contains(kind), "no kept inputs for {kind}: {kinds:?}");
     }
 }

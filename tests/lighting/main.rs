@@ -6,3 +6,4 @@ mod common;
 
 mod bump_mapping;
 mod forward;
+mod static_lighting;

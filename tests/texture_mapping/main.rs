@@ -7,6 +7,7 @@
 mod common;
 
 mod filtering;
+mod hard_cases;
 mod interpolation;
 mod mip_mapping;
 mod wrap;

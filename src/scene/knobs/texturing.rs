@@ -44,6 +44,19 @@ pub static NORMAL_MAPPING: Knob = Knob {
     },
 };
 
+pub static LIGHT_MAPS: Knob = Knob {
+    key: "render.light_maps",
+    label: "light maps",
+    help: "objects with a light_map draw the diffuse light baked when the scene loaded, with no light loop (notes 01 §8.2, forward path); off: they are lit per frame like the rest",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.light_maps),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.light_maps = b;
+        }
+    },
+};
+
 pub static MIP_COLORS: Knob = Knob {
     key: "render.mip_colors",
     label: "mip levels as colours",

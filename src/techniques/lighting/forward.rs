@@ -60,6 +60,8 @@ pub const FORWARD: Technique = Technique {
         &knobs::MIP_COLORS,
         // Bump mapping (notes 01 §8.4), forward and into the G-buffer.
         &knobs::NORMAL_MAPPING,
+        // Static lighting (notes 01 §8.2).
+        &knobs::LIGHT_MAPS,
         &knobs::DEPTH_FUNC,
         &knobs::AMBIENT,
         &knobs::BACKGROUND,
@@ -182,6 +184,7 @@ impl RunPasses for Forward {
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
+            p.set_i32("u_light_map", unit::LIGHT_MAP as i32);
             // Texture coordinates and vertex colours perspective-correct or
             // affine (notes 01 §4.1, §5.1).
             let affine = f.scene.render.interpolation == Interpolation::Affine;

@@ -1,6 +1,9 @@
 //! Writes the small committed assets next to this file:
 //!
 //! * `checker.png`: 256x256 sRGB albedo checkerboard (8x8 squares);
+//! * `atlas.png`, `atlas-padded.png`, `atlas-cube.obj`,
+//!   `atlas-cube-padded.obj`: a texture atlas of four tiles, with and without
+//!   gutters, and a cube mapped onto it (`atlas.rs` says how);
 //! * `uv-ramp.png`: 64x64, red rising with u and green with v (4 levels a
 //!   texel), blue lines every 8 texels: shows what wrap rules do with
 //!   coordinates outside [0, 1] (repeat: a sawtooth, mirror: a triangle,
@@ -38,12 +41,27 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 mod arm;
+mod atlas;
 
 fn main() -> Result<()> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/assets");
     write_png(&dir.join("checker.png"), checker())?;
     write_png(&dir.join("uv-ramp.png"), uv_ramp())?;
     write_text(&dir.join("rgb-triangle.obj"), RGB_TRIANGLE)?;
+    write_png(&dir.join("atlas.png"), atlas::atlas(false))?;
+    write_png(&dir.join("atlas-padded.png"), atlas::atlas(true))?;
+    write_obj(
+        &dir.join("atlas-cube.obj"),
+        &atlas::cube(false),
+        true,
+        "a cube whose faces use the four tiles of atlas.png",
+    )?;
+    write_obj(
+        &dir.join("atlas-cube-padded.obj"),
+        &atlas::cube(true),
+        true,
+        "a cube whose faces use the four padded tiles of atlas-padded.png",
+    )?;
     write_png(&dir.join("bricks.png"), bricks())?;
     write_png(&dir.join("bricks-normal.png"), bricks_normal())?;
     write_png(&dir.join("ripples.png"), ripples())?;

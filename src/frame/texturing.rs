@@ -28,8 +28,9 @@ pub const LEVEL_COLORS: [[u8; 3]; 8] = [
     [0, 0, 0],
 ];
 
-/// A sampler's settings: the wrap rule per axis, the filter, the anisotropy.
-type SamplerKey = ([Wrap; 2], TextureFilter, u32);
+/// A sampler's settings: the wrap rule per axis, the filter, the
+/// anisotropy, the last mip level (its bits).
+type SamplerKey = ([Wrap; 2], TextureFilter, u32, u32);
 
 /// The scene's samplers and mip-colour twins.
 pub struct TextureSamplers {
@@ -49,7 +50,13 @@ impl TextureSamplers {
                 let key = key(t, filter, max_anisotropy);
                 if let Entry::Vacant(e) = samplers.entry(key) {
                     let wrap = [t.wrap[0].gl(), t.wrap[1].gl()];
-                    e.insert(Sampler::new(gl, wrap, filter.gl(), key.2 as f32)?);
+                    e.insert(Sampler::new(
+                        gl,
+                        wrap,
+                        filter.gl(),
+                        key.2 as f32,
+                        t.max_lod,
+                    )?);
                 }
             }
         }
@@ -91,7 +98,7 @@ fn key(t: &Texturing, filter: TextureFilter, max: f32) -> SamplerKey {
     } else {
         1.0
     };
-    (t.wrap, filter, a as u32)
+    (t.wrap, filter, a as u32, t.max_lod.to_bits())
 }
 
 /// A `width` x `height` RGBA8 texture whose level k is LEVEL_COLORS[k % 8]

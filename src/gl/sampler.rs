@@ -16,14 +16,16 @@ pub struct Sampler {
 
 impl Sampler {
     /// glGenSamplers and glSamplerParameter*: wrap along s and t, the
-    /// minification and magnification filters, and, when `anisotropy` is
-    /// above 1, GL_TEXTURE_MAX_ANISOTROPY (an extension in GL 3.3: pass
+    /// minification and magnification filters, the last mip level read
+    /// (GL_TEXTURE_MAX_LOD), and, when `anisotropy` is above 1,
+    /// GL_TEXTURE_MAX_ANISOTROPY (an extension in GL 3.3: pass
     /// 1 where the driver lacks it).
     pub fn new(
         gl: &Gl,
         wrap: [u32; 2],
         (min_filter, mag_filter): (u32, u32),
         anisotropy: f32,
+        max_lod: f32,
     ) -> Result<Sampler> {
         unsafe {
             let id = gl
@@ -34,6 +36,7 @@ impl Sampler {
             gl.sampler_parameter_i32(id, glow::TEXTURE_WRAP_T, wrap[1] as i32);
             gl.sampler_parameter_i32(id, glow::TEXTURE_MIN_FILTER, min_filter as i32);
             gl.sampler_parameter_i32(id, glow::TEXTURE_MAG_FILTER, mag_filter as i32);
+            gl.sampler_parameter_f32(id, glow::TEXTURE_MAX_LOD, max_lod);
             if anisotropy > 1.0 {
                 gl.sampler_parameter_f32(id, glow::TEXTURE_MAX_ANISOTROPY, anisotropy);
             }

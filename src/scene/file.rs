@@ -264,6 +264,7 @@ pub(super) struct MaterialFile {
     pub(super) wrap: Option<toml::Value>,
     pub(super) filter: Option<super::texturing::TextureFilter>,
     pub(super) anisotropy: Option<f32>,
+    pub(super) max_lod: Option<f32>,
     pub(super) uv_scale: Option<[f32; 2]>,
     pub(super) uv_offset: Option<[f32; 2]>,
 }

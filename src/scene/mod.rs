@@ -20,6 +20,7 @@ mod file;
 pub mod fxaa;
 pub mod knobs;
 mod light_grid;
+mod light_maps;
 mod lights;
 pub mod meshes;
 mod mirrors;
@@ -43,6 +44,7 @@ mod warnings;
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
 pub use billboards::{Billboard, BillboardFieldFile, BillboardFile, MAX_BILLBOARDS};
 pub use file::LightGrid;
+pub use light_maps::{LightMapSettings, MAX_LIGHT_MAP};
 pub use lights::validate_attenuation;
 pub use mirrors::{Mirror, flat};
 pub use render_settings::RenderSettings;
@@ -208,16 +210,6 @@ pub struct Object {
     /// Static lighting (notes 01 §8.2): the light map to bake at load.
     pub light_map: Option<LightMapSettings>,
 }
-
-/// An object's light map: texels a side, and whether the bake casts shadow rays.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightMapSettings {
-    pub size: u32,
-    pub shadows: bool,
-}
-
-/// The largest light map side.
-pub const MAX_LIGHT_MAP: u32 = 2048;
 
 impl Object {
     /// T * Rz * Ry * Rx * S (column vectors: scale first, then rotate about

@@ -283,21 +283,7 @@ fn objects(
             mirror: locals[i].3.clone(),
             orientation: None,
             skin: locals[i].4.clone(),
-            light_map: match o.light_map {
-                None => None,
-                Some(_) if matches!(locals[i].1, super::MeshSource::Gltf(_)) => bail!(
-                    "objects[{i}].light_map: a skinned mesh moves; its light cannot be baked once"
-                ),
-                Some(l) if !(1..=super::MAX_LIGHT_MAP).contains(&l.size) => bail!(
-                    "objects[{i}].light_map.size: expected 1..={} texels a side, found {}",
-                    super::MAX_LIGHT_MAP,
-                    l.size
-                ),
-                Some(l) => Some(super::LightMapSettings {
-                    size: l.size,
-                    shadows: l.shadows,
-                }),
-            },
+            light_map: super::light_maps::light_map(i, o.light_map, &locals[i].1)?,
         });
     }
     super::update_models(&mut objects);

@@ -11,6 +11,7 @@
 //! wrap = ["repeat", "mirror"]   # s, t; or one word for both
 //! filter = "anisotropic"
 //! anisotropy = 16
+//! max_lod = 3                  # the last mip level read (an atlas's gutter)
 //! uv_scale = [8.0, 8.0]
 //! uv_offset = [0.0, 0.0]
 //! ```
@@ -132,6 +133,9 @@ pub struct Texturing {
     pub filter: TextureFilter,
     /// The most samples the anisotropic filter takes (1..=16; the driver may allow fewer).
     pub anisotropy: f32,
+    /// The last mip level sampling may read (GL_TEXTURE_MAX_LOD): an
+    /// atlas whose tiles have an n-texel gutter stays clean up to log2 n.
+    pub max_lod: f32,
     /// uv' = uv x scale + offset, applied in the vertex shader.
     pub uv_scale: [f32; 2],
     pub uv_offset: [f32; 2],
@@ -143,6 +147,7 @@ impl Default for Texturing {
             wrap: [Wrap::Repeat; 2],
             filter: TextureFilter::Trilinear,
             anisotropy: 16.0,
+            max_lod: 1000.0,
             uv_scale: [1.0, 1.0],
             uv_offset: [0.0, 0.0],
         }
@@ -167,6 +172,15 @@ pub(super) fn texturing(name: &str, f: &MaterialFile) -> Result<Texturing> {
             );
         }
         t.anisotropy = a;
+    }
+    if let Some(l) = f.max_lod {
+        if !(l.is_finite() && (0.0..=1000.0).contains(&l)) {
+            bail!(
+                "{}: expected a mip level in 0..=1000, found {l}",
+                key("max_lod")
+            );
+        }
+        t.max_lod = l;
     }
     for (k, v, out) in [
         ("uv_scale", f.uv_scale, &mut t.uv_scale),

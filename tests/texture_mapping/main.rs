@@ -6,6 +6,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod atlas;
 mod filtering;
 mod hard_cases;
 mod interpolation;

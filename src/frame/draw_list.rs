@@ -88,6 +88,9 @@ pub struct DrawList {
     /// What the camera's last culled walk did (`Frame::opaque_order` sets
     /// it; the demo and the bench show it).
     pub last_cull: Cell<CullStats>,
+    /// What the shadow passes' culling kept of the casters, summed over
+    /// the frame's shadow-map faces (the shadow technique adds to it).
+    pub shadow_cull: Cell<CullStats>,
 }
 
 impl DrawList {
@@ -191,6 +194,7 @@ impl DrawList {
             cull_tree: CullTree::default(),
             parents: scene.objects.iter().map(|o| o.parent).collect(),
             last_cull: Cell::default(),
+            shadow_cull: Cell::default(),
         };
         list.pose_skins(scene);
         list.grow_cull_tree();
@@ -285,6 +289,17 @@ impl DrawList {
             .map(|i| self.is_opaque_world(i))
             .collect();
         (self.cull_tree).visible(&Frustum::from_view_projection(vp), &wanted)
+    }
+
+    /// Which shadow casters (every object but the transparent ones) may
+    /// reach the shadow map of light view-projection `vp` (notes 01 §6.3
+    /// applied to §8.5): the light's frustum without its near plane, since
+    /// the shadow pass clamps depth and a caster between the light and the
+    /// near plane still casts.
+    pub fn casters_in(&self, vp: &Mat4) -> (Vec<bool>, CullStats) {
+        let wanted: Vec<bool> = self.items.iter().map(|d| !d.transparent).collect();
+        let frustum = Frustum::from_view_projection(vp).without_near();
+        self.cull_tree.visible(&frustum, &wanted)
     }
 
     /// Drawn by the opaque world passes: not transparent, not a mirror.

@@ -19,6 +19,9 @@ pub struct PassTimes {
     pub frame_ms: f64,
     /// What frustum culling kept of the camera's opaque objects (None: off).
     pub culling: Option<crate::frame::culling::CullStats>,
+    /// The same for the shadow passes' casters, summed over the shadow
+    /// maps' faces (None: off, or no shadow map).
+    pub shadow_culling: Option<crate::frame::culling::CullStats>,
 }
 
 impl PassTimes {

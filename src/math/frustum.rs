@@ -52,6 +52,14 @@ impl Frustum {
         Frustum { planes }
     }
 
+    /// The same frustum with its near plane dropped (it keeps everything):
+    /// what a shadow map drawn with GL_DEPTH_CLAMP covers, since a caster
+    /// between the light and the near plane still casts.
+    pub fn without_near(mut self) -> Frustum {
+        self.planes[4] = Vec4::new(0.0, 0.0, 0.0, 1.0);
+        self
+    }
+
     /// The signed distance from plane `i` to `p` (positive inside).
     pub fn distance(&self, i: usize, p: Vec3) -> f32 {
         self.planes[i].truncate().dot(p) + self.planes[i].w

@@ -151,6 +151,7 @@ impl Renderer {
             sources: &self.sources,
             defines: &defines,
         };
+        self.draws.shadow_cull.set(Default::default());
         for pass in &self.plan.passes {
             if self.techniques[pass.technique].is_none() {
                 self.techniques[pass.technique] =
@@ -351,6 +352,8 @@ impl Renderer {
         self.last_times = timer.finish();
         self.last_times.culling =
             (self.scene.render.frustum_culling).then(|| self.draws.last_cull.get());
+        let shadow = self.draws.shadow_cull.get();
+        self.last_times.shadow_culling = (shadow.objects > 0).then_some(shadow);
         self.debug.check(&self.gl, "the frame")?;
         Ok(())
     }

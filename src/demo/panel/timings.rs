@@ -68,6 +68,12 @@ impl Timings {
                         c.drawn, c.objects, c.culled, c.tests
                     ));
                 }
+                if let Some(c) = &times.shadow_culling {
+                    ui.label(format!(
+                        "shadow casters: {} drawn, {} culled over the shadow maps' faces",
+                        c.drawn, c.culled
+                    ));
+                }
                 let start = self.count.saturating_sub(self.frames.len() as u64);
                 let points: Vec<[f64; 2]> = self
                     .frames

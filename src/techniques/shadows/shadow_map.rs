@@ -185,7 +185,7 @@ impl RunPasses for ShadowMap {
                     gl.bind_framebuffer(glow::FRAMEBUFFER, Some(map.framebuffers[face]));
                     gl.clear(glow::DEPTH_BUFFER_BIT);
                     program.set_mat4("u_light_view_projection", vp);
-                    draw_casters(gl, program, f);
+                    draw_casters(gl, program, f, std::slice::from_ref(vp));
                 }
             } else {
                 // The whole cube attached as a layered image: one clear
@@ -196,7 +196,7 @@ impl RunPasses for ShadowMap {
                 for (face, vp) in view.view_projections.iter().enumerate() {
                     program.set_mat4(&format!("u_face_view_projection[{face}]"), vp);
                 }
-                draw_casters(gl, program, f);
+                draw_casters(gl, program, f, &view.view_projections);
             }
 
             // Restore the state this pass changed.
@@ -214,9 +214,29 @@ impl RunPasses for ShadowMap {
 }
 
 /// Every opaque object (mirrors too: they are solid); transparent ones cast
-/// no shadow here.
-fn draw_casters(gl: &glow::Context, p: &Program, f: &Frame) {
-    for d in f.draws.items.iter().filter(|d| !d.transparent) {
+/// no shadow here. With `render.frustum_culling`, only the casters inside
+/// the frustum of one of `faces` (the light's view-projections this draw
+/// reaches; notes 01 §6.3), counted in `DrawList::shadow_cull`.
+fn draw_casters(gl: &glow::Context, p: &Program, f: &Frame, faces: &[glam::Mat4]) {
+    let mut keep = vec![true; f.draws.items.len()];
+    if f.scene.render.frustum_culling {
+        let mut any = vec![false; keep.len()];
+        let mut total = f.draws.shadow_cull.get();
+        for vp in faces {
+            let (seen, stats) = f.draws.casters_in(vp);
+            for (a, s) in any.iter_mut().zip(seen) {
+                *a |= s;
+            }
+            total.objects += stats.objects;
+            total.drawn += stats.drawn;
+            total.culled += stats.culled;
+            total.tests += stats.tests;
+        }
+        f.draws.shadow_cull.set(total);
+        keep = any;
+    }
+    let casters = (f.draws.items.iter().zip(keep)).filter(|(d, k)| *k && !d.transparent);
+    for (d, _) in casters {
         unsafe { gl.front_face(if d.mirrored { glow::CW } else { glow::CCW }) };
         p.set_mat4("u_model", &d.model);
         f.draws.mesh(d).draw();

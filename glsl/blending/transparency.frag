@@ -12,7 +12,7 @@
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/surface_in.glsl"
-#include "common/normal_map.glsl"
+#include "common/bump_mapping.glsl"
 
 uniform int u_light_count;
 uniform vec3 u_eye;

@@ -10,7 +10,7 @@
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/surface_in.glsl"
-#include "common/normal_map.glsl"
+#include "common/bump_mapping.glsl"
 
 layout(location = 0) out vec4 g_normal_shininess;
 layout(location = 1) out vec4 g_albedo;

@@ -299,7 +299,7 @@ impl std::fmt::Display for FramePlan {
             match size {
                 Ok((tw, th)) => {
                     let level0 = u64::from(tw * th * 4);
-                    let chain = crate::math::texturing::mip_chain_bytes(*tw, *th, 4);
+                    let chain = crate::math::texture_mapping::mip_chain_bytes(*tw, *th, 4);
                     writeln!(
                         f,
                         "  {name}  {tw}x{th}: {level0} bytes, {chain} with its {} levels (+{:.0}%)",

@@ -42,7 +42,7 @@ pub(crate) mod lcg;
 pub mod skinning;
 pub mod slerp;
 pub mod sphere_light;
-pub mod texturing;
+pub mod texture_mapping;
 
 /// Builds a matrix from its four rows, written as they appear on paper.
 /// glam stores columns, so this is `from_cols_array_2d(rows).transpose()`.

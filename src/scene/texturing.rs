@@ -18,7 +18,7 @@
 
 use super::file::MaterialFile;
 use super::settings::setting;
-use crate::math::texturing::WrapRule;
+use crate::math::texture_mapping::WrapRule;
 use anyhow::{Result, bail};
 
 setting! {
@@ -42,7 +42,7 @@ impl Wrap {
             Wrap::Mirror => glow::MIRRORED_REPEAT,
         }
     }
-    /// The CPU twin's rule (src/math/texturing.rs).
+    /// The CPU twin's rule (src/math/texture_mapping.rs).
     pub fn rule(self) -> WrapRule {
         match self {
             Wrap::Clamp => WrapRule::Clamp,

@@ -1,4 +1,4 @@
-//! Notes 01 §8.4, bump mapping (glsl/common/normal_map.glsl,
+//! Notes 01 §8.4, bump mapping (glsl/common/bump_mapping.glsl,
 //! src/geometry/tangents.rs): a flat normal map changes nothing; a normal
 //! map baked on the CPU from a known height field lights a plane as the
 //! height field's analytic normals do, with the texture mirrored too (the
@@ -142,24 +142,31 @@ fn a_flat_normal_map_changes_nothing() {
 }
 
 #[test]
-fn forward_and_deferred_bump_alike() {
+fn every_deferred_path_bumps_as_forward_does() {
     let mut s = common::scene("bump-mapping.toml");
     s.render.size = (480, 270);
     let forward = common::render(&s, Output::Srgb8).image;
-    s.render.path = RenderPath::Deferred;
-    let deferred = common::render(&s, Output::Srgb8).image;
-    // The G-buffer stores the bumped normal in RGBA16F: a few pixels
-    // round differently.
-    common::assert_close(
-        "bump-forward-deferred",
-        &deferred,
-        &forward,
-        &Tolerance {
-            threshold: 2.0 / 255.0,
-            max_frac_over: 0.002,
-            max_abs: Some(6.0 / 255.0),
-        },
-    );
+    // The G-buffer holds the bumped normal (RGBA16F), which every deferred
+    // path lights: a few pixels round differently.
+    for path in [
+        RenderPath::Deferred,
+        RenderPath::Volumes,
+        RenderPath::Tiled,
+        RenderPath::Prepass,
+    ] {
+        s.render.path = path;
+        let deferred = common::render(&s, Output::Srgb8).image;
+        common::assert_close(
+            &format!("bump-forward-{path}"),
+            &deferred,
+            &forward,
+            &Tolerance {
+                threshold: 2.0 / 255.0,
+                max_frac_over: 0.002,
+                max_abs: Some(6.0 / 255.0),
+            },
+        );
+    }
 }
 
 #[test]

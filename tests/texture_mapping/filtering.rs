@@ -8,7 +8,7 @@
 
 use crate::common;
 use gloss::lighting::{srgb_decode, srgb_encode};
-use gloss::math::texturing::{WrapRule, linear_1d, nearest_texel};
+use gloss::math::texture_mapping::{WrapRule, linear_1d, nearest_texel};
 use gloss::renderer::Output;
 
 /// Texel i's 8-bit value: i^2, so neighbours differ and the steps grow.

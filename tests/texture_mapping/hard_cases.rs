@@ -144,7 +144,7 @@ fn a_non_power_of_two_texture_has_its_mip_chain() {
     assert_eq!(gloss::gl::texture::max_level(3, 5), 2);
     assert_eq!(gloss::gl::texture::level_size(3, 5, 1), (1, 2));
     assert_eq!(
-        gloss::math::texturing::mip_chain_bytes(3, 5, 4),
+        gloss::math::texture_mapping::mip_chain_bytes(3, 5, 4),
         4 * (15 + 2 + 1)
     );
 }

@@ -18,7 +18,7 @@ use crate::common;
 use glam::{DVec2, Vec4};
 use gloss::geometry;
 use gloss::math::interpolation::{barycentric, edge_distance, mix3, perspective_correct};
-use gloss::math::texturing::{WrapRule, nearest_texel};
+use gloss::math::texture_mapping::{WrapRule, nearest_texel};
 use gloss::renderer::Output;
 use gloss::scene::texturing::Interpolation;
 

@@ -1,7 +1,7 @@
 //! Texture mapping (notes 01 §5): the wrap rules on the notes' own
 //! examples, bilinear filtering on the notes' 7.6, the mip level the level
 //! of detail picks, and perspective-correct against affine texture
-//! coordinates, each held to its CPU twin (src/math/texturing.rs).
+//! coordinates, each held to its CPU twin (src/math/texture_mapping.rs).
 
 #[path = "../common/mod.rs"]
 mod common;

@@ -6,13 +6,13 @@
 //! The CPU finds, for each pixel, the floor point under it, its (u, v), the
 //! derivatives across the pixel's 2 x 2 quad (as the rasteriser takes them),
 //! lambda = log2 rho, and the level GL_NEAREST_MIPMAP_NEAREST reads
-//! (src/math/texturing.rs). Every pixel not within 0.1 of a switch between
+//! (src/math/texture_mapping.rs). Every pixel not within 0.1 of a switch between
 //! levels must show its level's colour.
 
 use crate::common;
 use glam::{Vec3, Vec4};
 use gloss::frame::texturing::LEVEL_COLORS;
-use gloss::math::texturing::{lod, nearest_level};
+use gloss::math::texture_mapping::{lod, nearest_level};
 use gloss::renderer::Output;
 
 #[test]

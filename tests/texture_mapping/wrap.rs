@@ -7,7 +7,7 @@
 //! read back.
 
 use crate::common;
-use gloss::math::texturing::{WrapRule, nearest_texel};
+use gloss::math::texture_mapping::{WrapRule, nearest_texel};
 use gloss::renderer::Output;
 use gloss::scene::texturing::Wrap;
 

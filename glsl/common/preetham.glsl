@@ -1,8 +1,8 @@
 // The sun-sky model of notes 03, Sun Sky: Preetham, Shirley and Smits, "A
 // Practical Analytic Model for Daylight" (SIGGRAPH 1999). This is the twin
-// of src/lighting/preetham.rs, which evaluates the same formula in f64 for
+// of src/math/preetham.rs, which evaluates the same formula in f64 for
 // the tests and computes these uniforms once per sun position
-// (Sky::uniforms). Not yet used by a pass.
+// (Sky::uniforms); glsl/sky/sun_sky.frag draws it.
 //
 //   F(theta, gamma) = (1 + A e^(B / cos theta)) (1 + C e^(D gamma) + E cos^2 gamma)   (paper eq. 3)
 //   xyY = zenith * F(theta, gamma) / F(0, theta_s), per channel                      (paper eq. 4)

@@ -9,7 +9,6 @@
 pub mod attenuation;
 pub mod bvh;
 pub mod microfacet;
-pub mod preetham;
 pub mod shadow_reference;
 pub mod static_lighting;
 pub mod tonemap;

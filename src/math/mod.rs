@@ -39,6 +39,7 @@ pub mod gaussian;
 pub mod interpolation;
 pub mod keyframes;
 pub(crate) mod lcg;
+pub mod preetham;
 pub mod skinning;
 pub mod slerp;
 pub mod sphere_light;

@@ -31,6 +31,7 @@ pub(super) struct SceneFile {
     /// Planes that cut the world open (src/scene/clip_planes.rs).
     #[serde(default)]
     pub(super) clip_planes: Vec<super::clip_planes::ClipPlaneFile>,
+    pub(super) sky: Option<super::sky::SkyFile>,
     /// Seeded groups of objects (src/scene/object_fields.rs).
     #[serde(default)]
     pub(super) object_fields: Vec<super::object_fields::ObjectFieldFile>,

@@ -35,6 +35,7 @@ mod save;
 mod settings;
 pub mod shadows;
 pub mod skins;
+pub mod sky;
 pub mod tessellation;
 mod text;
 pub mod texturing;
@@ -285,6 +286,8 @@ pub struct Scene {
     /// `[[clip_planes]]`: world-space planes (n, -n . p), |n| = 1; what lies
     /// on the side n points away from is cut away (gl_ClipDistance[1..]).
     pub clip_planes: Vec<glam::Vec4>,
+    /// `[sky]`: the Preetham sun-sky behind the world (notes 03, Sun Sky).
+    pub sky: Option<sky::SkySettings>,
     /// Every key the file and `--set` wrote, dotted (`render.cutoff`,
     /// `lights[0].shadow.cube`): `warnings` names those with no effect.
     pub keys_written: std::collections::BTreeSet<String>,

@@ -93,6 +93,7 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
         tessellation: super::tessellation::resolve(f.tessellation.as_ref(), base)?,
         particles: super::particles::resolve(f.particles.as_ref())?,
         clip_planes: super::clip_planes::clip_planes(&f.clip_planes)?,
+        sky: super::sky::sky(&f.sky)?,
         keys_written: Default::default(),
     };
     // The instant the file asks for.

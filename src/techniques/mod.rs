@@ -17,6 +17,7 @@ pub mod fragment_tests;
 pub mod lighting;
 pub mod post;
 pub mod shadows;
+pub mod sky;
 pub mod stencil;
 pub mod vertex_geometry;
 
@@ -42,6 +43,8 @@ pub static ALL: &[&Technique] = &[
     &deferred::composite::COMPOSITE,
     &stencil::mirror::MIRROR,
     &fragment_tests::viewports::VIEWPORTS,
+    // The sky behind the opaque world, before what blends over it.
+    &sky::sun_sky::SUN_SKY,
     &billboards::billboards::BILLBOARDS,
     &vertex_geometry::particles::PARTICLES,
     &blending::transparency::TRANSPARENCY,

@@ -1,0 +1,6 @@
+//! Notes 03's sky: the sun-sky pass (src/techniques/sky/sun_sky.rs).
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod sun_sky;

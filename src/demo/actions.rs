@@ -58,9 +58,12 @@ impl Demo {
                 self.set_values(scene)
             }),
             Action::Materials(materials) => {
-                // A new texture must be loaded: a new renderer for it.
+                // A new texture must be loaded, and new sampling needs its
+                // sampler objects and uv transform: a new renderer.
                 let textures = |m: &[crate::scene::Material]| -> Vec<_> {
-                    m.iter().map(|m| m.diffuse_texture.clone()).collect()
+                    m.iter()
+                        .map(|m| (m.diffuse_texture.clone(), m.texturing))
+                        .collect()
                 };
                 let reload = textures(&materials) != textures(&self.scene.materials);
                 let mut scene = self.scene.clone();

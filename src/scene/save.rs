@@ -80,6 +80,18 @@ impl Scene {
                         crate::scene::Cull::Back => t.remove("cull"),
                         c => t.insert("cull".into(), c.name().into()),
                     };
+                    // The sampling the demo edits (notes 01 §5), where not the default.
+                    let default = crate::scene::texturing::Texturing::default();
+                    if m.texturing.wrap == default.wrap {
+                        t.remove("wrap");
+                    } else {
+                        let [s, w] = m.texturing.wrap.map(|w| toml::Value::from(w.name()));
+                        t.insert("wrap".into(), toml::Value::Array(vec![s, w]));
+                    }
+                    match m.texturing.filter {
+                        f if f == default.filter => t.remove("filter"),
+                        f => t.insert("filter".into(), f.name().into()),
+                    };
                 }
             }
         }

@@ -352,3 +352,30 @@ fn shadow_knobs_survive_save_as() {
         common::assert_close(&format!("save-shadows-{name}"), &b, &a, &EXACT);
     }
 }
+
+#[test]
+fn texture_sampling_and_the_texture_knobs_survive_save_as() {
+    use gloss::scene::texturing::{FilterOverride, Interpolation, TextureFilter, Wrap};
+    let dir = std::env::temp_dir().join("gloss-save-as-sampling");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut scene = Scene::load(&common::root().join("scenes/texture-wrap.toml")).unwrap();
+    let m = scene
+        .materials
+        .iter()
+        .position(|m| m.name == "clamp")
+        .unwrap();
+    scene.materials[m].texturing.wrap = [Wrap::Mirror, Wrap::Clamp];
+    scene.materials[m].texturing.filter = TextureFilter::Trilinear;
+    scene.render.texture_filter = FilterOverride::Anisotropic;
+    scene.render.interpolation = Interpolation::Affine;
+    scene.render.mip_colors = true;
+    let file = dir.join("sampling.toml");
+    scene.save_as(&file).unwrap();
+    let again = Scene::load(&file).unwrap();
+    assert_eq!(again.materials, scene.materials);
+    assert_eq!(again.render, scene.render);
+    // The defaults are not written.
+    let text = std::fs::read_to_string(&file).unwrap();
+    assert!(!text.contains("filter = \"trilinear\""), "{text}");
+}

@@ -5,6 +5,7 @@
 
 use super::values::{number, vec3};
 use crate::assets;
+use crate::scene::texturing::{TextureFilter, Wrap};
 use crate::scene::{
     AlphaTest, BillboardFieldFile, BillboardFile, BillboardKind, Cull, DepthFunc, Material,
     MeshSource, Object, Scene, SplitView, Winding,
@@ -170,6 +171,39 @@ pub(super) fn material_tests(ui: &mut egui::Ui, i: usize, m: &mut Material) -> b
         .unwrap_or(0);
     if choose(ui, "front faces wind", ("winding", i), &winding, &mut k) {
         m.winding = Winding::ALL[k];
+        changed = true;
+    }
+    changed
+}
+
+/// How a material samples its texture (notes 01 §5): the wrap rule along s
+/// and along t, and the filter; true when one changed.
+pub(super) fn sampling(ui: &mut egui::Ui, i: usize, m: &mut Material) -> bool {
+    let mut changed = false;
+    let wraps: Vec<String> = Wrap::WORDS.iter().map(|w| w.to_string()).collect();
+    for (axis, label) in [(0, "wrap s (u)"), (1, "wrap t (v)")] {
+        let mut k = Wrap::ALL
+            .iter()
+            .position(|&x| x == m.texturing.wrap[axis])
+            .unwrap_or(0);
+        if choose(ui, label, (label, i), &wraps, &mut k) {
+            m.texturing.wrap[axis] = Wrap::ALL[k];
+            changed = true;
+        }
+    }
+    let filters: Vec<String> = TextureFilter::WORDS.iter().map(|w| w.to_string()).collect();
+    let mut k = TextureFilter::ALL
+        .iter()
+        .position(|&x| x == m.texturing.filter)
+        .unwrap_or(0);
+    if choose(
+        ui,
+        "material filter",
+        ("material filter", i),
+        &filters,
+        &mut k,
+    ) {
+        m.texturing.filter = TextureFilter::ALL[k];
         changed = true;
     }
     changed

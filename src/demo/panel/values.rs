@@ -125,6 +125,7 @@ pub fn materials(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::M
                         // Below 1 the transparency pass draws it (notes 01 §4.5).
                         changed |= number(ui, "opacity", &mut m.opacity, 0.0..=1.0);
                         changed |= structure::texture(ui, scene, i, m);
+                        changed |= structure::sampling(ui, i, m);
                         changed |= structure::material_tests(ui, i, m);
                     });
             }

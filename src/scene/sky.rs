@@ -10,7 +10,7 @@
 
 use crate::math::preetham::Sky;
 use anyhow::{Result, anyhow, bail};
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 use serde::Deserialize;
 
 #[derive(Deserialize, Debug, Clone)]
@@ -56,7 +56,7 @@ pub(super) fn sky(f: &Option<SkyFile>) -> Result<Option<SkySettings>> {
             s.intensity
         );
     }
-    let sun = DVec3::from(Vec3::from(s.sun).as_dvec3());
+    let sun = Vec3::from(s.sun).as_dvec3();
     let model = Sky::new(sun, f64::from(s.turbidity)).map_err(|e| {
         let key = if e.contains("turbidity") {
             "sky.turbidity"

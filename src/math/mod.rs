@@ -36,6 +36,7 @@ pub mod bump;
 pub mod depth;
 pub mod frustum;
 pub mod gaussian;
+pub mod gbuffer_encoding;
 pub mod interpolation;
 pub mod keyframes;
 pub(crate) mod lcg;

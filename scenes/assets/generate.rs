@@ -4,6 +4,8 @@
 //! * `atlas.png`, `atlas-padded.png`, `atlas-cube.obj`,
 //!   `atlas-cube-padded.obj`: a texture atlas of four tiles, with and without
 //!   gutters, and a cube mapped onto it (`atlas.rs` says how);
+//! * `bunny.obj`: the Stanford bunny, 1839 vertices and 3674 triangles,
+//!   from the vendored npm package `bunny` (`bunny/`, `bunny.rs`);
 //! * `uv-ramp.png`: 64x64, red rising with u and green with v (4 levels a
 //!   texel), blue lines every 8 texels: shows what wrap rules do with
 //!   coordinates outside [0, 1] (repeat: a sawtooth, mirror: a triangle,
@@ -42,6 +44,7 @@ use std::path::{Path, PathBuf};
 
 mod arm;
 mod atlas;
+mod bunny;
 
 fn main() -> Result<()> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/assets");
@@ -61,6 +64,14 @@ fn main() -> Result<()> {
         &atlas::cube(true),
         true,
         "a cube whose faces use the four padded tiles of atlas-padded.png",
+    )?;
+    let js =
+        std::fs::read_to_string(dir.join("bunny/index.js")).context("reading bunny/index.js")?;
+    write_obj(
+        &dir.join("bunny.obj"),
+        &bunny::bunny(&js)?,
+        true,
+        "the Stanford bunny, from the npm package bunny (bunny/LICENSE.md)",
     )?;
     write_png(&dir.join("bricks.png"), bricks())?;
     write_png(&dir.join("bricks-normal.png"), bricks_normal())?;

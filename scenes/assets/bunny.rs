@@ -16,7 +16,7 @@ fn numbers(js: &str, name: &str) -> Result<Vec<f64>> {
     let rest = &js[start + name.len() + 1..];
     let end = rest.find([';', '\n']).unwrap_or(rest.len());
     rest[..end]
-        .split(|c: char| c == '[' || c == ']' || c == ',')
+        .split(['[', ']', ','])
         .filter(|s| !s.trim().is_empty())
         .map(|s| {
             s.trim()

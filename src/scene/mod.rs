@@ -22,6 +22,7 @@ pub mod knobs;
 mod light_grid;
 mod light_maps;
 mod lights;
+mod material;
 pub mod meshes;
 mod mirrors;
 pub mod object_fields;
@@ -47,6 +48,7 @@ pub use billboards::{Billboard, BillboardFieldFile, BillboardFile, MAX_BILLBOARD
 pub use file::LightGrid;
 pub use light_maps::{LightMapSettings, MAX_LIGHT_MAP};
 pub use lights::validate_attenuation;
+pub use material::Material;
 pub use mirrors::{Mirror, flat};
 pub use render_settings::RenderSettings;
 pub use settings::{
@@ -134,37 +136,6 @@ impl Light {
     /// The brightest channel, I_max in notes 04.
     pub fn i_max(&self) -> f32 {
         self.radiance().max_element()
-    }
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct Material {
-    pub name: String,
-    pub diffuse: Vec3,
-    pub diffuse_texture: Option<PathBuf>,
-    /// A tangent-space normal map (notes 01 §8.4): linear RGB, (n + 1) / 2.
-    pub normal_map: Option<PathBuf>,
-    pub specular: Vec3,
-    pub shininess: f32,
-    /// Alpha test on the diffuse texture's alpha: op and reference (notes 05).
-    pub alpha_test: AlphaTest,
-    pub alpha_ref: f32,
-    /// Alpha (notes 01 §4.5): 1 = opaque; below 1 the transparency pass draws it.
-    pub opacity: f32,
-    /// The depth test for this material's objects (None: `render.depth_func`).
-    pub depth_func: Option<DepthFunc>,
-    /// The faces its objects cull (notes 01 §3.4).
-    pub cull: Cull,
-    /// Which winding its meshes' front faces have (notes 01 §3.4).
-    pub winding: Winding,
-    /// How its texture is sampled: wrap, filter, uv transform (notes 01 §5).
-    pub texturing: texturing::Texturing,
-}
-
-impl Material {
-    /// Drawn by the transparency pass, not by the opaque passes.
-    pub fn is_transparent(&self) -> bool {
-        self.opacity < 1.0
     }
 }
 

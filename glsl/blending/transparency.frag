@@ -28,10 +28,12 @@ void main() {
     if (!gl_FrontFacing) N = -N;
     vec3 V = normalize(u_eye - v_position);
     vec3 kd = material_diffuse(uv) * surface_color();
+    vec3 ks = material_specular();
+    Reflectance r = material_reflectance();
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
         if (casts_shadow(i)) continue;   // in the loop below
-        c += phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+        c += surface_shade(u_lights[i], v_position, N, V, kd, ks, r);
     }
     // The lights that cast, with shadow mapping's second pass (notes 01
     // §8.5): how much of light i reaches here.
@@ -39,7 +41,7 @@ void main() {
         int i = caster(k);
         if (i < 0) break;
         float lit = shadow_visibility(i, v_position, N);
-        c += lit * phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+        c += lit * surface_shade(u_lights[i], v_position, N, V, kd, ks, r);
     }
     frag_color = vec4(output_color(c).rgb, u_opacity);
 }

@@ -35,7 +35,7 @@ void far_light(Surface s, vec3 V, out vec3 diffuse, out vec3 specular) {
         float far = 1.0 - near_weight(distance(s.P, light.position_type.xyz), radius);
         if (far <= 0.0) continue;
         vec3 d, sp;
-        phong_light(light, s.P, s.N, V, s.shininess, d, sp);
+        surface_light(light, s.P, s.N, V, s.r, d, sp);
         diffuse += far * d;
         specular += far * sp;
     }
@@ -56,7 +56,8 @@ ivec2 far_texel(ivec2 t) {
 
 // Whether sample surface o can stand for surface s: on s's tangent plane
 // (within 1% of the distance to the eye), within u_far_reach of it, with
-// the same shininess, and its normal within an angle that moves the
+// the same shininess (a microfacet pixel's is its lobe's Blinn-Phong
+// equivalent, src/scene/material.rs), and its normal within an angle that moves the
 // specular lobe by at most 1%: the steepest slope of cos^n is about
 // sqrt(n / e) per radian, so 0.01 / sqrt(n / e + 1) radians (0.1 degrees at
 // n = 64). On a curved surface that fails for all but the nearest

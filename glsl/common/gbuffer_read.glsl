@@ -6,6 +6,10 @@ uniform sampler2D u_gbuffer_normal;     // normal.xyz, shininess
 uniform sampler2D u_gbuffer_albedo;     // diffuse albedo (linear)
 uniform sampler2D u_gbuffer_specular;   // specular colour (linear)
 uniform sampler2D u_gbuffer_depth;      // depth: the position is rebuilt from it
+uniform sampler2D u_gbuffer_alpha;      // gAlpha, when u_gbuffer_material is not 0
+uniform sampler2D u_gbuffer_convert;    // gConvert, for the report's encoding
+#include "common/reflectance.glsl"
+#include "common/gbuffer_material.glsl"
 uniform mat4 u_inverse_view_projection;
 // The view's rectangle in the target (x, y, width, height in pixels): the
 // whole target, or a split view's quarter (src/frame/views.rs).
@@ -16,9 +20,28 @@ struct Surface {
     vec3 N;
     float shininess;
     vec3 kd;
-    vec3 ks;
+    vec3 ks;          // the specular colour, or k_s for a microfacet pixel
     float depth;
+    Reflectance r;    // Phong (shininess) or notes 03's microfacet triple
 };
+
+// The pixel's reflectance model, from gAlpha and gConvert where the
+// G-buffer has them; sets ks to k_s for a microfacet pixel.
+void read_reflectance(ivec2 texel, inout Surface s) {
+    s.r = Reflectance(false, s.shininess, 1.0, 1.0);
+    if (u_gbuffer_material == GBUFFER_MATERIAL_NONE) {
+        return;
+    }
+    vec4 convert = u_gbuffer_material == GBUFFER_MATERIAL_REPORT
+        ? texelFetch(u_gbuffer_convert, texel, 0) : vec4(0.0);
+    vec3 t;
+    s.r.microfacet = decode_material(texelFetch(u_gbuffer_alpha, texel, 0), convert, t);
+    if (s.r.microfacet) {
+        s.r.alpha = t.x;
+        s.r.eta = t.y;
+        s.ks = vec3(t.z);
+    }
+}
 
 vec2 gbuffer_uv() {
     return gl_FragCoord.xy / textureSize(u_gbuffer_normal, 0).xy;
@@ -52,6 +75,7 @@ Surface read_geometry_texel(ivec2 texel) {
     s.kd = vec3(0.0);
     s.ks = vec3(0.0);
     s.P = world_position_at(vec2(texel) + 0.5, s.depth);
+    read_reflectance(texel, s);
     return s;
 }
 
@@ -64,5 +88,6 @@ Surface read_gbuffer(vec2 uv) {
     s.kd = texture(u_gbuffer_albedo, uv).rgb;
     s.ks = texture(u_gbuffer_specular, uv).rgb;
     s.P = world_position(uv, s.depth);
+    read_reflectance(ivec2(uv * vec2(textureSize(u_gbuffer_normal, 0))), s);
     return s;
 }

@@ -16,6 +16,9 @@
 // Every vector is in world space; L points from the surface to the light.
 // src/lighting.rs evaluates the same formula on the CPU for the tests.
 
+#include "common/reflectance.glsl"
+#include "common/microfacet.glsl"
+
 #define LIGHT_DIRECTIONAL 0
 #define LIGHT_POINT 1
 #define LIGHT_SPOT 2
@@ -115,5 +118,36 @@ void phong_light(Light light, vec3 P, vec3 N, vec3 V, float shininess,
 vec3 phong(Light light, vec3 P, vec3 N, vec3 V, vec3 kd, vec3 ks, float shininess) {
     vec3 d, s;
     phong_light(light, P, N, V, shininess, d, s);
+    return kd * d + ks * s;
+}
+
+// Diffuse and specular light from one light for either reflectance model
+// (not yet multiplied by k_d and the specular colour). The microfacet
+// specular is pi f_s(L, V, N) (N . L) I with k_s = 1 (common/microfacet.glsl):
+// the diffuse term k_d (N . L) I is the Lambertian k_d / pi under an
+// irradiance of pi I, so the specular takes the same pi. Over the sphere
+// light's horizon both use its N . L.
+void surface_light(Light light, vec3 P, vec3 N, vec3 V, Reflectance r,
+                   out vec3 diffuse, out vec3 specular) {
+    if (!r.microfacet) {
+        phong_light(light, P, N, V, r.shininess, diffuse, specular);
+        return;
+    }
+    vec3 L;
+    float sin_sigma;
+    float f = light_factor(light, P, L, sin_sigma);
+    vec3 I = light.color_cos_outer.rgb * f;
+    float visible;
+    float n_dot_l = sphere_cosine(dot(N, L), sin_sigma, visible);
+    diffuse = I * n_dot_l;
+    specular = I * (PI * microfacet_brdf(L, V, N, r.alpha, r.eta, 1.0) * n_dot_l);
+}
+
+// The colour one light gives a surface: k_d times its diffuse light plus ks
+// (the Phong specular colour, or k_s for a microfacet surface) times its
+// specular light.
+vec3 surface_shade(Light light, vec3 P, vec3 N, vec3 V, vec3 kd, vec3 ks, Reflectance r) {
+    vec3 d, s;
+    surface_light(light, P, N, V, r, d, s);
     return kd * d + ks * s;
 }

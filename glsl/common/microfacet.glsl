@@ -1,6 +1,6 @@
 // The Cook-Torrance microfacet specular BRDF (Cook and Torrance 1982) for
 // notes 03's material triple (alpha, eta, k_s) (notes 03, Geometry Pass).
-// Not used by any pass yet. Its Rust twin is src/lighting/microfacet.rs:
+// common/lighting.glsl's surface_light uses it. Its Rust twin is src/lighting/microfacet.rs:
 // `brdf` there is the f64 reference, and `brdf_f32` takes the steps of
 // `microfacet_brdf` below in f32, for a GPU test to compare with.
 //

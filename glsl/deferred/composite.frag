@@ -7,6 +7,10 @@ uniform sampler2D u_light;   // the accumulated light (HDR), unit::LIGHT
 uniform bool u_has_light;    // false: the frame has no lights, so no lighting pass ran
 uniform vec3 u_ambient;
 uniform vec3 u_background;
+// The ambient light pass's AO (notes 03, Ambient Light; deferred/ambient_light.rs),
+// unit::AMBIENT_OCCLUSION; false: the scene has no [ambient_occlusion].
+uniform sampler2D u_ambient_occlusion;
+uniform bool u_has_ambient_occlusion;
 out vec4 frag_color;
 
 void main() {
@@ -22,5 +26,9 @@ void main() {
         return;
     }
     vec3 kd = texture(u_gbuffer_albedo, uv).rgb;
-    frag_color = output_color(u_ambient * kd + (u_has_light ? texture(u_light, uv).rgb : vec3(0.0)));
+    vec3 ambient = u_ambient * kd;
+    if (u_has_ambient_occlusion) {
+        ambient *= texture(u_ambient_occlusion, uv).r;
+    }
+    frag_color = output_color(ambient + (u_has_light ? texture(u_light, uv).rgb : vec3(0.0)));
 }

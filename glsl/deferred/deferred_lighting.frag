@@ -10,18 +10,16 @@ layout(location = 0) out vec4 diffuse_light;
 layout(location = 1) out vec4 specular_light;
 
 void main() {
-    vec2 uv = gbuffer_uv();
-    float depth = texture(u_gbuffer_depth, uv).r;
-    if (depth == 1.0) discard;
-    vec4 ns = texture(u_gbuffer_normal, uv);
-    vec3 P = world_position(uv, depth);
+    // The thin G-buffer: normal, shininess (or the microfacet triple), depth.
+    Surface g = read_geometry_texel(ivec2(gl_FragCoord.xy));
+    if (g.depth == 1.0) discard;
     Light light = u_lights[u_light_id];
     float radius = light.direction_radius.w;
-    if (radius >= 0.0 && distance(P, light.position_type.xyz) > radius) discard;
+    if (radius >= 0.0 && distance(g.P, light.position_type.xyz) > radius) discard;
     vec3 d, s;
-    phong_light(light, P, ns.xyz, normalize(u_eye - P), ns.w, d, s);
+    surface_light(light, g.P, g.N, normalize(u_eye - g.P), g.r, d, s);
     // Shadow mapping's second pass (notes 01 §8.5) scales both lights.
-    float lit = shadow_visibility(u_light_id, P, ns.xyz);
+    float lit = shadow_visibility(u_light_id, g.P, g.N);
     diffuse_light = vec4(lit * d, 1.0);
     specular_light = vec4(lit * s, 1.0);
 }

@@ -5,13 +5,21 @@
 #include "common/material.glsl"
 #include "common/alpha_test.glsl"
 #include "common/lighting_output.glsl"
+#include "common/normals.glsl"
+#include "common/environment.glsl"
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/surface_in.glsl"
+#include "common/bump_mapping.glsl"
+uniform vec3 u_eye;   // the skybox mirror reflection (notes 03, Implementation), as forward adds it
 uniform sampler2D u_diffuse_light;    // unit::LIGHT
 uniform sampler2D u_specular_light;   // unit::SPECULAR_LIGHT
 uniform bool u_has_light;             // false: no lights, no light pre-pass ran
 uniform vec3 u_ambient;
+// The ambient light pass's AO (notes 03, Ambient Light; deferred/ambient_light.rs),
+// unit::AMBIENT_OCCLUSION; false: the scene has no [ambient_occlusion].
+uniform sampler2D u_ambient_occlusion;
+uniform bool u_has_ambient_occlusion;
 out vec4 frag_color;
 
 void main() {
@@ -23,5 +31,11 @@ void main() {
         D = texture(u_diffuse_light, pixel).rgb;
         S = texture(u_specular_light, pixel).rgb;
     }
-    frag_color = output_color(material_diffuse(uv) * surface_color() * (u_ambient + D) + u_specular * S);
+    vec3 ambient = u_ambient;
+    if (u_has_ambient_occlusion) {
+        ambient *= texture(u_ambient_occlusion, gl_FragCoord.xy / textureSize(u_ambient_occlusion, 0).xy).r;
+    }
+    vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
+    vec3 mirrored = environment_reflection(u_reflectivity, N, normalize(u_eye - v_position));
+    frag_color = output_color(material_diffuse(uv) * surface_color() * (ambient + D) + material_specular() * S + mirrored);
 }

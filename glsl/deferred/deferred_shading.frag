@@ -15,5 +15,5 @@ void main() {
     vec3 V = normalize(u_eye - s.P);
     // Shadow mapping's second pass (notes 01 §8.5), from the G-buffer's P and N.
     float lit = shadow_visibility(u_light_id, s.P, s.N);
-    light_out = vec4(lit * phong(u_lights[u_light_id], s.P, s.N, V, s.kd, s.ks, s.shininess), 1.0);
+    light_out = vec4(lit * surface_shade(u_lights[u_light_id], s.P, s.N, V, s.kd, s.ks, s.r), 1.0);
 }

@@ -18,14 +18,14 @@ void main() {
     vec3 sum = vec3(0.0);
     for (int i = 0; i < u_light_count; ++i) {
         if (casts_shadow(i)) continue;   // in the loop below
-        sum += phong(u_lights[i], s.P, s.N, V, s.kd, s.ks, s.shininess);
+        sum += surface_shade(u_lights[i], s.P, s.N, V, s.kd, s.ks, s.r);
     }
     // The lights that cast, with shadow mapping's second pass (notes 01 §8.5).
     for (int k = 0; k < MAX_CASTERS; ++k) {
         int i = caster(k);
         if (i < 0) break;
         float lit = shadow_visibility(i, s.P, s.N);
-        sum += lit * phong(u_lights[i], s.P, s.N, V, s.kd, s.ks, s.shininess);
+        sum += lit * surface_shade(u_lights[i], s.P, s.N, V, s.kd, s.ks, s.r);
     }
     light_out = vec4(sum, 1.0);
 }

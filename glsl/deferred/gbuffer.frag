@@ -4,17 +4,30 @@
 //   1: diffuse albedo                     SRGB8_ALPHA8 (GL_FRAMEBUFFER_SRGB on)
 //   2: specular colour                    SRGB8_ALPHA8
 //   depth: the depth buffer itself; position is rebuilt from it.
+//   3: gAlpha, 4: gConvert: notes 03's microfacet triple (common/gbuffer_material.glsl),
+//      when the scene has a microfacet material; at 1 and 2 in the light
+//      pre-pass's thin G-buffer (THIN_GBUFFER), which drops albedo and specular.
 #include "common/normals.glsl"
 #include "common/material.glsl"
 #include "common/alpha_test.glsl"
+#include "common/gbuffer_material.glsl"
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/surface_in.glsl"
 #include "common/bump_mapping.glsl"
 
 layout(location = 0) out vec4 g_normal_shininess;
+#ifdef THIN_GBUFFER
+layout(location = 1) out vec4 g_alpha;
+layout(location = 2) out vec4 g_convert;
+layout(location = 3) out vec4 g_albedo;     // no attachment: dropped
+layout(location = 4) out vec4 g_specular;   // no attachment: dropped
+#else
 layout(location = 1) out vec4 g_albedo;
 layout(location = 2) out vec4 g_specular;
+layout(location = 3) out vec4 g_alpha;
+layout(location = 4) out vec4 g_convert;
+#endif
 
 void main() {
     vec2 uv = surface_uv();
@@ -22,5 +35,7 @@ void main() {
     // The normal after the normal map (notes 01 §8.4) is what the lights read.
     g_normal_shininess = vec4(bumped_normal(safe_normal(v_normal, v_position), uv), u_shininess);
     g_albedo = vec4(material_diffuse(uv) * surface_color(), 1.0);
-    g_specular = vec4(u_specular, 1.0);
+    g_specular = vec4(u_specular, u_reflectivity);
+    vec3 triple = vec3(u_microfacet_alpha, u_microfacet_eta, u_microfacet_k_s);
+    encode_material(triple, u_microfacet, g_alpha, g_convert);
 }

@@ -20,5 +20,5 @@ void main() {
     vec3 V = normalize(u_eye - s.P);
     // The volume shader samples the light's shadow map (notes 01 §8.5).
     float lit = shadow_visibility(u_light_id, s.P, s.N);
-    light_out = vec4(lit * phong(light, s.P, s.N, V, s.kd, s.ks, s.shininess), 1.0);
+    light_out = vec4(lit * surface_shade(light, s.P, s.N, V, s.kd, s.ks, s.r), 1.0);
 }

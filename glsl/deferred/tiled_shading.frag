@@ -33,7 +33,7 @@ vec3 shade(int i, Surface s, vec3 V) {
     Light light = light_at(i);
     float radius = light.direction_radius.w;
     if (radius >= 0.0 && distance(s.P, light.position_type.xyz) > radius) return vec3(0.0);
-    return phong(light, s.P, s.N, V, s.kd, s.ks, s.shininess);
+    return surface_shade(light, s.P, s.N, V, s.kd, s.ks, s.r);
 }
 
 // A listed light's share of this pixel: all of it up to its radius, or,
@@ -43,7 +43,7 @@ vec3 shade_listed(int i, Surface s, vec3 V) {
     Light light = light_at(i);
     float w = near_weight(distance(s.P, light.position_type.xyz), light.direction_radius.w);
     if (w <= 0.0) return vec3(0.0);
-    return w * phong(light, s.P, s.N, V, s.kd, s.ks, s.shininess);
+    return w * surface_shade(light, s.P, s.N, V, s.kd, s.ks, s.r);
 #else
     return shade(i, s, V);
 #endif

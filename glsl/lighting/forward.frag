@@ -6,6 +6,7 @@
 #include "common/material.glsl"
 #include "common/alpha_test.glsl"
 #include "common/lighting_output.glsl"
+#include "common/environment.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -26,6 +27,8 @@ void main() {
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 V = normalize(u_eye - v_position);
     vec3 kd = material_diffuse(uv) * surface_color();
+    vec3 ks = material_specular();
+    Reflectance r = material_reflectance();
     // Static lighting (notes 01 §8.2): the diffuse light baked when the
     // scene loaded, read over the mesh's own uvs; no light loop.
     if (u_has_light_map) {
@@ -36,7 +39,7 @@ void main() {
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
         if (casts_shadow(i)) continue;   // in the loop below
-        c += phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+        c += surface_shade(u_lights[i], v_position, N, V, kd, ks, r);
     }
     // The lights that cast, with shadow mapping's second pass (notes 01
     // §8.5): how much of light i reaches here.
@@ -44,7 +47,8 @@ void main() {
         int i = caster(k);
         if (i < 0) break;
         float lit = shadow_visibility(i, v_position, N);
-        c += lit * phong(u_lights[i], v_position, N, V, kd, u_specular, u_shininess);
+        c += lit * surface_shade(u_lights[i], v_position, N, V, kd, ks, r);
     }
+    c += environment_reflection(u_reflectivity, N, V);   // notes 03, Implementation
     frag_color = output_color(c);
 }

@@ -31,7 +31,7 @@ void main() {
     kd *= (g_color[0] + g_color[1] + g_color[2]) / 3.0;   // the vertex colours' mean
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
-        c += phong(u_lights[i], P, N, V, kd, u_specular, u_shininess);
+        c += surface_shade(u_lights[i], P, N, V, kd, material_specular(), material_reflectance());
     }
     for (int k = 0; k < 3; ++k) {
         f_color = c;

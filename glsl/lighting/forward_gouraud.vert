@@ -17,6 +17,10 @@ uniform mat3 u_normal_matrix;
 uniform int u_light_count;
 uniform vec3 u_eye;
 uniform float u_shininess;
+// The material's model (common/material.glsl, which the fragment stage reads).
+uniform bool u_microfacet;
+uniform float u_microfacet_alpha;
+uniform float u_microfacet_eta;
 
 out vec3 v_diffuse_light;
 out vec3 v_specular_light;
@@ -28,9 +32,10 @@ void main() {
     vec3 V = normalize(u_eye - world.xyz);
     v_diffuse_light = vec3(0.0);
     v_specular_light = vec3(0.0);
+    Reflectance r = Reflectance(u_microfacet, u_shininess, u_microfacet_alpha, u_microfacet_eta);
     for (int i = 0; i < u_light_count; ++i) {
         vec3 d, s;
-        phong_light(u_lights[i], world.xyz, N, V, u_shininess, d, s);
+        surface_light(u_lights[i], world.xyz, N, V, r, d, s);
         v_diffuse_light += d;
         v_specular_light += s;
     }

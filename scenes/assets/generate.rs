@@ -31,6 +31,9 @@
 //!   (1 on the tree, 0 around it, a one-texel soft edge); the transparent
 //!   texels keep the sprite's colour so filtering brings in no dark fringe.
 //!
+//! * `skybox-px.png` ... `skybox-nz.png`: a cube map's six labelled faces
+//!   with a horizon (`skybox.rs` says how);
+//!
 //! * `arm.glb`: a skinned arm, three joints and two clips, as binary glTF
 //!   2.0 (`arm.rs` says how it is built).
 //!
@@ -45,6 +48,7 @@ use std::path::{Path, PathBuf};
 mod arm;
 mod atlas;
 mod bunny;
+mod skybox;
 
 fn main() -> Result<()> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/assets");
@@ -78,6 +82,9 @@ fn main() -> Result<()> {
     write_png(&dir.join("ripples.png"), ripples())?;
     write_rgba_png(&dir.join("tree.png"), tree())?;
     write_rgba_png(&dir.join("grass.png"), grass())?;
+    for (f, file) in skybox::FILES.iter().enumerate() {
+        write_png(&dir.join(file), skybox::face(f))?;
+    }
     write_obj(
         &dir.join("knot.obj"),
         &torus_knot(2, 3, 128, 12),

@@ -63,6 +63,11 @@ pub struct BenchArgs {
     /// scene scenes/texture-filtering.toml.
     #[arg(long, conflicts_with_all = ["vary", "aa"])]
     pub filtering: bool,
+    /// Measure screen-space ambient occlusion instead, at 4, 8, 16, 32 and
+    /// 64 samples, against its ray-traced CPU reference (src/bench/ssao.rs);
+    /// default scene scenes/ambient-occlusion.toml.
+    #[arg(long, conflicts_with_all = ["vary", "aa", "filtering"])]
+    pub ssao: bool,
     /// Measure how each path's frame time grows with the number of lights
     /// (their radii shrunk so that about as many reach each pixel) and with
     /// the number of pixels, instead (src/bench/scaling.rs).

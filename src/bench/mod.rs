@@ -10,8 +10,8 @@
 //! around glFinish ("cpu+glFinish"). On a real GPU the whole frame is also
 //! timed with a GL_TIME_ELAPSED query ("gpu" column).
 //!
-//! `--aa` and `--filtering` measure anti-aliasing and texture filtering
-//! against supersampled references instead (`aa`, `filtering`);
+//! `--aa`, `--filtering` and `--ssao` measure anti-aliasing, texture filtering
+//! and SSAO against references instead (`aa`, `filtering`, `ssao`);
 //! `--scaling`, how the paths' times grow with lights and pixels.
 //! The files: `args`, `stats` (median and spread), `table`, `csv`, `plot`
 //! (error against frame time), `floor` (each pass against the fill-rate
@@ -35,6 +35,7 @@ mod post;
 mod scaling;
 pub mod shadows;
 mod skinning;
+pub mod ssao;
 mod stats;
 mod table;
 mod variants;
@@ -45,9 +46,7 @@ pub use plot::{PLOT_SIZE, plot};
 pub use stats::Stats;
 pub use table::{BenchRow, speedup_vs_forward, table};
 
-use crate::gl::program::Sources;
-use crate::gl::query::TimerQuery;
-use crate::gl::{Backend, Headless};
+use crate::gl::{Backend, Headless, program::Sources, query::TimerQuery};
 use crate::image_compare::compare_rgba8;
 use crate::renderer::Renderer;
 use crate::scene::{RenderPath, Scene};
@@ -91,6 +90,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     let default = match () {
         _ if args.aa => "scenes/antialiasing.toml",
         _ if args.filtering => "scenes/texture-filtering.toml",
+        _ if args.ssao => "scenes/ambient-occlusion.toml",
         _ if !args.particles.is_empty() => "scenes/particles.toml",
         _ if !args.skinning.is_empty() => "scenes/skinned-arm.toml",
         _ => "scenes/many-lights.toml",
@@ -106,6 +106,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
     match () {
         _ if args.aa => return aa::run(args, &scene_path, &ctx),
         _ if args.filtering => return filtering::run(args, &scene_path, &ctx),
+        _ if args.ssao => return ssao::run(args, &scene_path, &ctx),
         _ if args.scaling => return scaling::run(args, &base, &ctx, software),
         _ if !args.particles.is_empty() => return particles::run(args, &base, &ctx),
         _ if !args.skinning.is_empty() => return skinning::run(args, &base, &ctx),

@@ -65,6 +65,11 @@ pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
     if samples > 1 {
         unchecked.push(format!("GL_MAX_SAMPLES for render.msaa = {samples}"));
     }
+    let deferred = scene.render.path != crate::scene::RenderPath::Forward;
+    if deferred && !crate::frame::gbuffer::material_attachments(scene).is_empty() {
+        unchecked
+            .push("GL_MAX_TEXTURE_IMAGE_UNITS >= 18 for the G-buffer's microfacet triple".into());
+    }
     if lights_in_buffer_texture(scene) {
         if scene.lights.len() > BUFFER_LIGHTS_ON_EVERY_GL {
             unchecked.push(format!(

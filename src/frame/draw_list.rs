@@ -16,6 +16,7 @@ use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture};
 use crate::math;
 use crate::math::frustum::Frustum;
+use crate::scene::material::Microfacet;
 use crate::scene::texturing::Texturing;
 use crate::scene::{Cull, DepthFunc, MeshSource, Scene, Winding};
 use anyhow::Result;
@@ -38,6 +39,8 @@ pub struct DrawItem {
     pub diffuse: Vec3,
     pub specular: Vec3,
     pub shininess: f32,
+    /// Notes 03's microfacet triple (None: the Phong terms above).
+    pub microfacet: Option<crate::scene::material::Microfacet>,
     pub texture: Option<usize>,
     /// The material's normal map (notes 01 §8.4), if it has one.
     pub normal_map: Option<usize>,
@@ -55,6 +58,8 @@ pub struct DrawItem {
     pub alpha_ref: f32,
     /// The material's opacity (alpha, notes 01 §4.5).
     pub opacity: f32,
+    /// How much of the environment it mirrors (src/frame/environment.rs).
+    pub reflectivity: f32,
     /// Opacity < 1: the opaque passes skip it, the transparency pass draws it.
     pub transparent: bool,
     /// The material's own depth test (None: `render.depth_func`).
@@ -81,6 +86,8 @@ pub struct DrawList {
     pub billboards: BillboardDraws,
     /// The skinned objects (src/frame/skins.rs), each with its own mesh.
     pub skins: Vec<SkinDraw>,
+    /// The environment cube map (src/frame/environment.rs).
+    pub environment: super::environment::Environment,
     /// The objects' boxes through the scene graph, for frustum culling
     /// (src/frame/culling.rs), and each object's parent.
     cull_tree: CullTree,
@@ -157,6 +164,7 @@ impl DrawList {
                 diffuse: m.diffuse,
                 specular: m.specular,
                 shininess: m.shininess,
+                microfacet: m.microfacet,
                 texture,
                 normal_map,
                 light_map: light_maps[object].take().map(|t| {
@@ -169,6 +177,7 @@ impl DrawList {
                 alpha_test: m.alpha_test.code(),
                 alpha_ref: m.alpha_ref,
                 opacity: m.opacity,
+                reflectivity: m.reflectivity,
                 transparent: m.is_transparent(),
                 depth_func: m.depth_func,
                 cull: m.cull,
@@ -191,6 +200,7 @@ impl DrawList {
             bounds,
             billboards: BillboardDraws::new(gl, scene)?,
             skins,
+            environment: super::environment::Environment::new(gl, scene)?,
             cull_tree: CullTree::default(),
             parents: scene.objects.iter().map(|o| o.parent).collect(),
             last_cull: Cell::default(),
@@ -236,9 +246,11 @@ impl DrawList {
             d.diffuse = m.diffuse;
             d.specular = m.specular;
             d.shininess = m.shininess;
+            d.microfacet = m.microfacet;
             d.alpha_test = m.alpha_test.code();
             d.alpha_ref = m.alpha_ref;
             d.opacity = m.opacity;
+            d.reflectivity = m.reflectivity;
             d.cull = m.cull;
             d.transparent = m.is_transparent();
             d.depth_func = m.depth_func;
@@ -318,7 +330,22 @@ impl DrawList {
         p.set_f32("u_mirror", if d.mirrored { -1.0 } else { 1.0 });
         p.set_vec3("u_diffuse", d.diffuse);
         p.set_vec3("u_specular", d.specular);
-        p.set_f32("u_shininess", d.shininess);
+        p.set_f32("u_reflectivity", d.reflectivity);
+        // A microfacet surface's shininess is its lobe's Blinn-Phong
+        // equivalent: what the far field's error bound reads from the G-buffer.
+        let shininess = d
+            .microfacet
+            .map_or(d.shininess, |m| m.equivalent_shininess());
+        p.set_f32("u_shininess", shininess);
+        let m = d.microfacet.unwrap_or(Microfacet {
+            alpha: 1.0,
+            eta: 1.0,
+            k_s: 0.0,
+        });
+        p.set_bool("u_microfacet", d.microfacet.is_some());
+        p.set_f32("u_microfacet_alpha", m.alpha);
+        p.set_f32("u_microfacet_eta", m.eta);
+        p.set_f32("u_microfacet_k_s", m.k_s);
         p.set_bool("u_has_diffuse_texture", d.texture.is_some());
         let (scale, offset) = (d.texturing.uv_scale, d.texturing.uv_offset);
         p.set_vec4(

@@ -9,6 +9,13 @@
 //! | 1          | SRGB8_ALPHA8     | diffuse albedo (stored sRGB, read linear) |
 //! | 2          | SRGB8_ALPHA8     | specular colour                         |
 //! | depth      | DEPTH_COMPONENT24 | depth (position is rebuilt from it); DEPTH24_STENCIL8 when the stencil light volumes use its stencil |
+//! | 3          | RGBA8 or RGBA16F | gAlpha: notes 03's microfacet triple (alpha, eta, k_s), as `render.gbuffer_encoding` says |
+//! | 4          | RGBA8            | gConvert: the report's flags (1: stored as its reciprocal), w = 1 for a microfacet pixel |
+//!
+//! Attachments 3 and 4 exist only when an opaque material is microfacet
+//! (`material_attachments`), 4 only for the report's encodings (the plain
+//! one has gAlpha.w = 1 for a microfacet pixel). The thin G-buffer puts
+//! them at 1 and 2. glsl/common/gbuffer_material.glsl writes and reads them.
 //!
 //! Notes 03 stores `(normal + 1) / 2` in 8 bits; a 16-bit float keeps the
 //! normal to about 1e-3 instead of 4e-3, which is what keeps deferred within
@@ -25,6 +32,25 @@ use glow::HasContext;
 pub const NORMAL: (&str, u32) = ("normal_shininess", glow::RGBA16F);
 pub const ALBEDO: (&str, u32) = ("albedo", glow::SRGB8_ALPHA8);
 pub const SPECULAR: (&str, u32) = ("specular", glow::SRGB8_ALPHA8);
+pub const CONVERT: (&str, u32) = ("convert", glow::RGBA8);
+
+/// The attachments that hold the microfacet triple (notes 03, Geometry
+/// Pass): none when no opaque material is microfacet, gAlpha alone for the
+/// plain encoding, gAlpha and gConvert for the report's.
+pub fn material_attachments(scene: &crate::scene::Scene) -> Vec<(&'static str, u32)> {
+    use crate::scene::material::GBufferEncoding;
+    let microfacet = (scene.objects.iter())
+        .map(|o| &scene.materials[o.material])
+        .any(|m| m.microfacet.is_some() && !m.is_transparent());
+    if !microfacet {
+        return vec![];
+    }
+    match scene.render.gbuffer_encoding {
+        GBufferEncoding::ReportRgba8 => vec![("alpha", glow::RGBA8), CONVERT],
+        GBufferEncoding::ReportRgba16f => vec![("alpha", glow::RGBA16F), CONVERT],
+        GBufferEncoding::PlainRgba16f => vec![("alpha", glow::RGBA16F)],
+    }
+}
 
 /// The G-buffer's depth format: with a stencil only when something needs
 /// it, otherwise it would be a stencil allocated and cleared every frame for
@@ -52,15 +78,15 @@ pub fn has_stencil(format: u32) -> bool {
 pub const NAME: &str = "gbuffer";
 
 /// The full G-buffer, or the thin one of the light pre-pass, with depth in
-/// `depth` (`depth_format`).
-pub fn target(thin: bool, depth: u32) -> TargetDesc {
+/// `depth` (`depth_format`) and the `material_attachments` after the rest.
+pub fn target(thin: bool, depth: u32, material: &[(&'static str, u32)]) -> TargetDesc {
     TargetDesc {
         name: NAME,
         samples: 1,
         colors: if thin {
-            vec![NORMAL]
+            [&[NORMAL][..], material].concat()
         } else {
-            vec![NORMAL, ALBEDO, SPECULAR]
+            [&[NORMAL, ALBEDO, SPECULAR][..], material].concat()
         },
         depth: Depth::Own(depth),
         ping_pong: false,
@@ -107,9 +133,82 @@ pub fn bind_for_reading(
         }
         gl.active_texture(glow::TEXTURE0);
     }
+    bind_material(gl, p, gbuffer);
     p.set_mat4("u_inverse_view_projection", &frame.inverse_view_projection);
     p.set_vec4("u_viewport", glam::IVec4::from(frame.viewport).as_vec4());
     p.set_vec3("u_eye", frame.eye);
+}
+
+/// How the lighting passes decode the material attachments: the values of
+/// `u_gbuffer_material` in glsl/common/gbuffer_material.glsl.
+pub mod material_code {
+    /// No material attachments: every pixel is Phong.
+    pub const NONE: i32 = 0;
+    /// gAlpha holds reciprocals where gConvert says so.
+    pub const REPORT: i32 = 1;
+    /// gAlpha holds the values as they are.
+    pub const PLAIN: i32 = 2;
+}
+
+/// The material attachments of `gbuffer` (whose layout `target` made): their
+/// first index, and the `material_code`.
+pub fn material_layout(gbuffer: &Framebuffer) -> (usize, i32) {
+    let c = &gbuffer.colors;
+    let thin = c.get(1).is_none_or(|t| t.internal_format != ALBEDO.1);
+    let first = if thin { 1 } else { 3 };
+    let code = match c.len().saturating_sub(first) {
+        0 => material_code::NONE,
+        1 => material_code::PLAIN,
+        _ => material_code::REPORT,
+    };
+    (first, code)
+}
+
+/// Bind gAlpha and gConvert, when the G-buffer has them, on units
+/// GBUFFER_ALPHA and GBUFFER_CONVERT (16 and 17: tiled shading with shadows
+/// takes all 16 that GL 3.3 promises, so a microfacet scene on a deferred
+/// path needs a GL with 18, `check_units`).
+fn bind_material(gl: &glow::Context, p: &Program, gbuffer: &Framebuffer) {
+    let (first, code) = material_layout(gbuffer);
+    p.set_i32("u_gbuffer_material", code);
+    if code == material_code::NONE {
+        return;
+    }
+    let c = &gbuffer.colors;
+    unsafe {
+        gl.active_texture(glow::TEXTURE0 + unit::GBUFFER_ALPHA);
+        gl.bind_texture(glow::TEXTURE_2D, Some(c[first].id));
+        p.set_i32("u_gbuffer_alpha", unit::GBUFFER_ALPHA as i32);
+        if code == material_code::REPORT {
+            gl.active_texture(glow::TEXTURE0 + unit::GBUFFER_CONVERT);
+            gl.bind_texture(glow::TEXTURE_2D, Some(c[first + 1].id));
+            p.set_i32("u_gbuffer_convert", unit::GBUFFER_CONVERT as i32);
+        }
+        gl.active_texture(glow::TEXTURE0);
+    }
+}
+
+/// The texture units a G-buffer with material attachments needs
+/// (GBUFFER_CONVERT + 1), against what this GL has: an error that says so.
+pub fn check_units(gl: &glow::Context, scene: &crate::scene::Scene) -> anyhow::Result<()> {
+    let deferred = scene.render.path != crate::scene::RenderPath::Forward;
+    if !deferred || material_attachments(scene).is_empty() {
+        return Ok(());
+    }
+    let have = unsafe { gl.get_parameter_i32(glow::MAX_TEXTURE_IMAGE_UNITS) };
+    let need = unit::GBUFFER_CONVERT as i32 + 1;
+    if have < need {
+        anyhow::bail!(
+            "{}: a microfacet material on the {} path reads its G-buffer triple from texture \
+             unit {} and {}, but this GL has {have} fragment texture units: use \
+             render.path = \"forward\"",
+            scene.path.display(),
+            scene.render.path,
+            unit::GBUFFER_ALPHA,
+            unit::GBUFFER_CONVERT
+        );
+    }
+    Ok(())
 }
 
 /// Unbind the G-buffer's texture units.
@@ -123,6 +222,14 @@ pub fn unbind(gl: &glow::Context) {
         ] {
             gl.active_texture(glow::TEXTURE0 + u);
             gl.bind_texture(glow::TEXTURE_2D, None);
+        }
+        // The material's units, where this GL has them.
+        let units = gl.get_parameter_i32(glow::MAX_COMBINED_TEXTURE_IMAGE_UNITS);
+        if units > unit::GBUFFER_CONVERT as i32 {
+            for u in [unit::GBUFFER_ALPHA, unit::GBUFFER_CONVERT] {
+                gl.active_texture(glow::TEXTURE0 + u);
+                gl.bind_texture(glow::TEXTURE_2D, None);
+            }
         }
         gl.active_texture(glow::TEXTURE0);
     }

@@ -25,6 +25,7 @@ pub mod clusters;
 pub mod culling;
 pub mod draw_list;
 pub mod draw_textures;
+pub mod environment;
 pub mod gbuffer;
 pub mod lights;
 pub mod meshes;

@@ -137,6 +137,8 @@ pub fn bytes_per_pixel(format: u32) -> u64 {
     match format {
         glow::RGBA16F => 8,
         glow::RGBA32F => 16,
+        // The ambient occlusion (techniques/deferred/ambient_light.rs).
+        glow::R16F => 2,
         // RGBA8, SRGB8_ALPHA8, DEPTH24_STENCIL8, DEPTH_COMPONENT24 (padded
         // to 32 bits), DEPTH_COMPONENT32F.
         _ => 4,
@@ -159,6 +161,7 @@ pub fn format_name(format: u32) -> &'static str {
         glow::SRGB8_ALPHA8 => "SRGB8_ALPHA8",
         glow::RGBA16F => "RGBA16F",
         glow::RGBA32F => "RGBA32F",
+        glow::R16F => "R16F",
         glow::DEPTH24_STENCIL8 => "DEPTH24_STENCIL8",
         glow::DEPTH_COMPONENT24 => "DEPTH_COMPONENT24",
         glow::DEPTH_COMPONENT32F => "DEPTH_COMPONENT32F",

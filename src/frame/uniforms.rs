@@ -46,6 +46,10 @@ pub mod unit {
     pub const GBUFFER_ALBEDO: u32 = 1;
     pub const GBUFFER_SPECULAR: u32 = 2;
     pub const GBUFFER_DEPTH: u32 = 3;
+    /// The microfacet triple, gAlpha and gConvert (notes 03, src/frame/gbuffer.rs):
+    /// past the 16 units GL 3.3 promises, which tiled shading fills.
+    pub const GBUFFER_ALPHA: u32 = 16;
+    pub const GBUFFER_CONVERT: u32 = 17;
     /// The accumulated light (`u_light`; the light pre-pass's diffuse light).
     pub const LIGHT: u32 = 4;
     /// The light pre-pass's specular light (`u_specular_light`).
@@ -60,6 +64,15 @@ pub mod unit {
     /// promises a fragment shader are taken.
     pub const FAR_DIFFUSE: u32 = 14;
     pub const FAR_SPECULAR: u32 = 15;
+    /// The environment cube map (`u_environment`, glsl/common/environment.glsl):
+    /// FAR_DIFFUSE's unit, which only tiled shading's lighting pass reads, and
+    /// no pass reads both.
+    pub const ENVIRONMENT: u32 = 14;
+    /// The ambient occlusion (techniques/deferred/ambient_light.rs): its
+    /// passes' own input (the rotation tile, the AO being blurred), and the
+    /// AO the ambient term reads in the composite and the light pre-pass's
+    /// combine. Those two bind no shadow map, so one of their units serves.
+    pub const AMBIENT_OCCLUSION: u32 = 13;
     /// A post-chain step reads the previous image (`u_image`).
     pub const POST_INPUT: u32 = 0;
 }

@@ -5,6 +5,7 @@
 //! files, where a student can read them next to the notes.
 
 pub mod buffer;
+pub mod cube_map;
 pub mod debug;
 pub mod depth_map;
 pub mod egl;

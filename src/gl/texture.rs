@@ -341,6 +341,7 @@ fn upload_format(internal: u32) -> Result<(u32, u32)> {
         glow::RGBA16F | glow::RGBA32F | glow::RGB16F | glow::RGB32F | glow::R32F | glow::RG16F => {
             (glow::RGBA, glow::FLOAT)
         }
+        glow::R16F => (glow::RED, glow::FLOAT),
         glow::DEPTH24_STENCIL8 => (glow::DEPTH_STENCIL, glow::UNSIGNED_INT_24_8),
         glow::DEPTH32F_STENCIL8 => (glow::DEPTH_STENCIL, glow::FLOAT_32_UNSIGNED_INT_24_8_REV),
         glow::DEPTH_COMPONENT24 | glow::DEPTH_COMPONENT32F => (glow::DEPTH_COMPONENT, glow::FLOAT),

@@ -1,7 +1,8 @@
 //! The Cook-Torrance microfacet specular BRDF (Cook and Torrance 1982) in
 //! f64: the CPU reference for the material triple (alpha, eta, k_s) that the
 //! geometry pass writes into gAlpha (notes 03, Geometry Pass).
-//! glsl/common/microfacet.glsl is its GPU twin (no pass uses it yet), and
+//! glsl/common/microfacet.glsl is its GPU twin (every lighting pass uses it
+//! through `surface_light` in glsl/common/lighting.glsl), and
 //! [`brdf_f32`] takes that file's steps in f32, for a GPU test to compare with.
 //!
 //! ```text

@@ -6,6 +6,7 @@
 //! `shadow_reference` is the exact answer shadow mapping approximates
 //! (notes 01 §8.5): rays to the light through a BVH (`bvh`, `triangle`).
 
+pub mod ambient_occlusion;
 pub mod attenuation;
 pub mod bvh;
 pub mod microfacet;

@@ -93,6 +93,7 @@ impl Renderer {
             ),
             max_texels(gl),
         )?;
+        crate::frame::gbuffer::check_units(gl, scene)?;
         let clip = unsafe { gl.get_parameter_i32(glow::MAX_CLIP_DISTANCES) } as usize;
         if scene.clip_planes.len() + 1 > clip {
             anyhow::bail!(

@@ -32,6 +32,10 @@ pub(super) struct SceneFile {
     #[serde(default)]
     pub(super) clip_planes: Vec<super::clip_planes::ClipPlaneFile>,
     pub(super) sky: Option<super::sky::SkyFile>,
+    /// The cube map behind the world (src/scene/skybox.rs).
+    pub(super) skybox: Option<super::skybox::SkyboxFile>,
+    /// Screen-space ambient occlusion (src/scene/ambient_occlusion.rs).
+    pub(super) ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusionFile>,
     /// Seeded groups of objects (src/scene/object_fields.rs).
     #[serde(default)]
     pub(super) object_fields: Vec<super::object_fields::ObjectFieldFile>,
@@ -126,6 +130,9 @@ pub(super) struct RenderFile {
     pub(super) mip_colors: bool,
     pub(super) normal_mapping: bool,
     pub(super) light_maps: bool,
+    /// Draw the skybox before the opaque world, depth test off (forward only).
+    pub(super) sky_first: bool,
+    pub(super) gbuffer_encoding: super::material::GBufferEncoding,
 }
 
 impl Default for RenderFile {
@@ -164,6 +171,8 @@ impl Default for RenderFile {
             mip_colors: false,
             normal_mapping: true,
             light_maps: true,
+            sky_first: false,
+            gbuffer_encoding: super::material::GBufferEncoding::PlainRgba16f,
         }
     }
 }
@@ -244,6 +253,12 @@ pub(super) struct MaterialFile {
     pub(super) specular: [f32; 3],
     #[serde(default = "shininess_default")]
     pub(super) shininess: f32,
+    /// "phong" (the default) or "microfacet", with notes 03's triple
+    /// (src/scene/material.rs).
+    pub(super) model: Option<super::material::Model>,
+    pub(super) alpha: Option<f32>,
+    pub(super) eta: Option<f32>,
+    pub(super) k_s: Option<f32>,
     /// The alpha test on the diffuse texture's alpha (notes 05, "Alpha Test").
     #[serde(default = "always")]
     pub(super) alpha_test: AlphaTest,
@@ -252,6 +267,9 @@ pub(super) struct MaterialFile {
     /// 1 = opaque; below 1 the object is transparent (notes 01 §4.5, §6.1).
     #[serde(default = "one")]
     pub(super) opacity: f32,
+    /// How much of the environment it mirrors, 0..=1 (src/scene/skybox.rs).
+    #[serde(default)]
+    pub(super) reflectivity: f32,
     /// Overrides `render.depth_func` for this material's objects.
     pub(super) depth_func: Option<DepthFunc>,
     /// The faces its objects cull: back (the default), front,
@@ -280,10 +298,10 @@ fn half() -> f32 {
 fn grey() -> [f32; 3] {
     [0.6, 0.6, 0.6]
 }
-fn spec_default() -> [f32; 3] {
+pub(super) fn spec_default() -> [f32; 3] {
     [0.3, 0.3, 0.3]
 }
-fn shininess_default() -> f32 {
+pub(super) fn shininess_default() -> f32 {
     32.0
 }
 

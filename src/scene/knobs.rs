@@ -11,12 +11,14 @@ use glam::Vec3;
 
 mod animation;
 mod lighting;
+mod sky;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use lighting::{
-    ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, STENCIL_VOLUMES,
-    TILE_SIZE,
+    ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
+    STENCIL_VOLUMES, TILE_SIZE,
 };
+pub use sky::SKY_FIRST;
 pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
 /// What a knob holds.
@@ -322,6 +324,7 @@ pub static ALL: &[&Knob] = &[
     &TILE_SIZE,
     &FAR_FIELD,
     &DEPTH_SLICES,
+    &GBUFFER_ENCODING,
     &AMBIENT,
     &BACKGROUND,
     &MIRROR_ORDER,
@@ -339,6 +342,7 @@ pub static ALL: &[&Knob] = &[
     &MIP_COLORS,
     &NORMAL_MAPPING,
     &LIGHT_MAPS,
+    &SKY_FIRST,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,

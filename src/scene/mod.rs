@@ -11,6 +11,7 @@
 //! triangles behind each mesh source (`meshes`).
 
 mod alpha_test;
+pub mod ambient_occlusion;
 pub mod animation;
 mod billboards;
 pub mod bloom;
@@ -22,7 +23,7 @@ pub mod knobs;
 mod light_grid;
 mod light_maps;
 mod lights;
-mod material;
+pub mod material;
 pub mod meshes;
 mod mirrors;
 pub mod object_fields;
@@ -37,6 +38,7 @@ mod settings;
 pub mod shadows;
 pub mod skins;
 pub mod sky;
+pub mod skybox;
 pub mod tessellation;
 mod text;
 pub mod texturing;
@@ -259,6 +261,8 @@ pub struct Scene {
     pub clip_planes: Vec<glam::Vec4>,
     /// `[sky]`: the Preetham sun-sky behind the world (notes 03, Sun Sky).
     pub sky: Option<sky::SkySettings>,
+    /// `[skybox]`: the cube map behind the world (notes 03, Implementation).
+    pub skybox: Option<skybox::Environment>,
     /// Every key the file and `--set` wrote, dotted (`render.cutoff`,
     /// `lights[0].shadow.cube`): `warnings` names those with no effect.
     pub keys_written: std::collections::BTreeSet<String>,

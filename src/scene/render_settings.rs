@@ -136,6 +136,9 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         mip_colors: r.mip_colors,
         normal_mapping: r.normal_mapping,
         light_maps: r.light_maps,
+        sky_first: r.sky_first,
+        ambient_occlusion: super::ambient_occlusion::resolve(f.ambient_occlusion.as_ref())?,
+        gbuffer_encoding: r.gbuffer_encoding,
     })
 }
 
@@ -213,4 +216,12 @@ pub struct RenderSettings {
     pub normal_mapping: bool,
     /// Objects with a light map draw it instead of their light loop (notes 01 §8.2).
     pub light_maps: bool,
+    /// Draw the skybox first, before the opaque world, with the depth test
+    /// off, instead of last at z = w (notes 03, Implementation; forward only).
+    pub sky_first: bool,
+    /// `[ambient_occlusion]`: SSAO on the G-buffer paths (notes 03, Ambient
+    /// Light; src/scene/ambient_occlusion.rs). None: the ambient term unoccluded.
+    pub ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusion>,
+    /// How the G-buffer holds the microfacet triple (notes 03, Geometry Pass).
+    pub gbuffer_encoding: super::material::GBufferEncoding,
 }

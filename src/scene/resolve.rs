@@ -94,9 +94,11 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
         particles: super::particles::resolve(f.particles.as_ref())?,
         clip_planes: super::clip_planes::clip_planes(&f.clip_planes)?,
         sky: super::sky::sky(&f.sky)?,
+        skybox: super::skybox::skybox(&f.skybox, f.sky.is_some(), base)?,
         keys_written: Default::default(),
     };
     // The instant the file asks for.
+    super::skybox::check_reflective(&scene)?;
     scene.set_time(scene.animation.time)?;
     Ok(scene)
 }
@@ -113,9 +115,11 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         normal_map: None,
         specular: Vec3::splat(0.3),
         shininess: 32.0,
+        microfacet: None,
         alpha_test: AlphaTest::Always,
         alpha_ref: 0.5,
         opacity: 1.0,
+        reflectivity: 0.0,
         depth_func: None,
         cull: super::Cull::Back,
         winding: super::Winding::Ccw,
@@ -176,9 +180,11 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             normal_map,
             specular: Vec3::from(m.specular),
             shininess: m.shininess,
+            microfacet: super::material::microfacet(n, m)?,
             alpha_test: m.alpha_test,
             alpha_ref: m.alpha_ref,
             opacity: m.opacity,
+            reflectivity: super::skybox::reflectivity(n, m.reflectivity)?,
             depth_func: m.depth_func,
             cull: m.cull.unwrap_or(super::Cull::Back),
             winding: m.winding.unwrap_or(super::Winding::Ccw),

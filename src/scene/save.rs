@@ -28,6 +28,7 @@ impl Scene {
                 .expect("a knob writes valid TOML");
             render.insert(key.to_string(), v["v"].clone());
         }
+        super::ambient_occlusion::save(&self.render, &mut table);
         // The light grid as it is now (the demo edits every parameter).
         if let Some(g) = &self.light_grid {
             let mut grid = toml::Table::new();
@@ -59,9 +60,26 @@ impl Scene {
                     .and_then(toml::Value::as_table_mut)
                 {
                     t.insert("diffuse".into(), vec3(m.diffuse));
-                    t.insert("specular".into(), vec3(m.specular));
-                    t.insert("shininess".into(), toml::Value::Float(m.shininess.into()));
+                    // Phong's terms, or notes 03's microfacet triple.
+                    match &m.microfacet {
+                        None => {
+                            t.insert("specular".into(), vec3(m.specular));
+                            t.insert("shininess".into(), toml::Value::Float(m.shininess.into()));
+                            for k in ["model", "alpha", "eta", "k_s"] {
+                                t.remove(k);
+                            }
+                        }
+                        Some(mf) => {
+                            t.remove("specular");
+                            t.remove("shininess");
+                            t.insert("model".into(), "microfacet".into());
+                            t.insert("alpha".into(), toml::Value::Float(mf.alpha.into()));
+                            t.insert("eta".into(), toml::Value::Float(mf.eta.into()));
+                            t.insert("k_s".into(), toml::Value::Float(mf.k_s.into()));
+                        }
+                    }
                     t.insert("opacity".into(), toml::Value::Float(m.opacity.into()));
+                    t.insert("reflectivity".into(), m.reflectivity.into());
                     t.insert("alpha_test".into(), m.alpha_test.name().into());
                     t.insert("alpha_ref".into(), toml::Value::Float(m.alpha_ref.into()));
                     match &m.diffuse_texture {
@@ -201,6 +219,15 @@ impl Scene {
                     fix(r);
                 }
             }
+        }
+        // The skybox's faces.
+        let faces = table.get_mut("skybox").and_then(|s| s.get_mut("faces"));
+        for f in faces
+            .and_then(toml::Value::as_array_mut)
+            .into_iter()
+            .flatten()
+        {
+            fix(f);
         }
         // Billboard sprites (`[[billboards]]`, `[[billboard_fields]]`).
         for list in ["billboards", "billboard_fields"] {

@@ -23,6 +23,7 @@ impl Scene {
         self.light_warnings(&mut w);
         self.material_warnings(&mut w);
         self.camera_warnings(&mut w);
+        self.skybox_warnings(&mut w);
         // What loading each skinned mesh's file said, once per file.
         let mut seen = Vec::new();
         for s in self.objects.iter().filter_map(|o| o.skin.as_ref()) {
@@ -62,6 +63,7 @@ impl Scene {
         let r = &self.render;
         let path = r.path;
         let on_path = format!("has no effect on the {path} path");
+        w.extend(super::ambient_occlusion::warning(r));
         let mut warn = |key: &str, set: bool, value: String, why: &str| {
             if set && self.written(&format!("render.{key}")) {
                 w.push(format!("render.{key} = {value} {why}"));

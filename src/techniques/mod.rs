@@ -31,6 +31,10 @@ pub static ALL: &[&Technique] = &[
     // First: every later pass draws the skinned meshes it poses.
     &animation::skinned_meshes::SKINNED_MESHES,
     &shadows::shadow_map::SHADOW_MAP,
+    // Before the views too: the [sky] into the environment cube map.
+    &sky::sky_cube_map::SKY_CUBE_MAP,
+    // The skybox before the opaque world (render.sky_first, for comparison).
+    &sky::sky_first::SKY_FIRST,
     &lighting::forward::FORWARD,
     &vertex_geometry::tessellation::TESSELLATION,
     &deferred::gbuffer::GBUFFER,
@@ -39,12 +43,18 @@ pub static ALL: &[&Technique] = &[
     &deferred::stencil_light_volumes::STENCIL_LIGHT_VOLUMES,
     &deferred::far_field::FAR_FIELD,
     &deferred::tiled_shading::TILED_SHADING,
+    // After the lights, as notes 03 orders them; before the passes that
+    // add the ambient term (the combine, the composite).
+    &deferred::ambient_light::AMBIENT_LIGHT,
     &deferred::deferred_lighting::DEFERRED_LIGHTING,
+    // Added to the accumulated light, before the composite reads it.
+    &sky::skybox_reflection::SKYBOX_REFLECTION,
     &deferred::composite::COMPOSITE,
     &stencil::mirror::MIRROR,
     &fragment_tests::viewports::VIEWPORTS,
     // The sky behind the opaque world, before what blends over it.
     &sky::sun_sky::SUN_SKY,
+    &sky::skybox::SKYBOX,
     &billboards::billboards::BILLBOARDS,
     &vertex_geometry::particles::PARTICLES,
     &blending::transparency::TRANSPARENCY,

@@ -112,6 +112,7 @@ pub fn gl_state(gl: &glow::Context) -> Vec<(String, i64)> {
             ("CLIP_DISTANCE1", glow::CLIP_DISTANCE1),
             ("CLIP_DISTANCE7", glow::CLIP_DISTANCE7),
             ("RASTERIZER_DISCARD", glow::RASTERIZER_DISCARD),
+            ("TEXTURE_CUBE_MAP_SEAMLESS", glow::TEXTURE_CUBE_MAP_SEAMLESS),
         ] {
             v.push((name.to_string(), gl.is_enabled(cap) as i64));
         }

@@ -27,6 +27,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod ambient_light;
 mod deferred_lighting;
 mod deferred_shading;
 mod far_field;

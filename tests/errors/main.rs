@@ -10,6 +10,7 @@
 //!   for what it is; `gloss plan` refuses what `gloss render` refuses;
 //! * keys that have no effect get a warning.
 
+mod ambient_occlusion;
 mod cli;
 mod gl_version;
 mod mirror;

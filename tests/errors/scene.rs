@@ -321,6 +321,64 @@ fn material_opacity_out_of_range() {
 }
 
 #[test]
+fn microfacet_keys_on_the_wrong_model_or_out_of_range() {
+    // BASE's floor is Phong with specular [0.5, 0.5, 0.5] and shininess 24.
+    let phong = "specular = [0.5, 0.5, 0.5]\nshininess = 24.0";
+    let cases: [(&str, &str, &[&str]); 7] = [
+        (
+            "microfacet_alpha_on_phong",
+            "specular = [0.5, 0.5, 0.5]\nshininess = 24.0\nalpha = 0.3",
+            &["materials.floor.alpha", "model = \"microfacet\""],
+        ),
+        (
+            "microfacet_with_shininess",
+            "specular = [0.3, 0.3, 0.3]\nshininess = 24.0\nmodel = \"microfacet\"",
+            &[
+                "materials.floor.shininess",
+                "a microfacet material has no shininess",
+            ],
+        ),
+        (
+            "microfacet_with_specular",
+            "specular = [0.5, 0.5, 0.5]\nmodel = \"microfacet\"",
+            &["materials.floor.specular", "alpha, eta and k_s"],
+        ),
+        (
+            "microfacet_alpha_zero",
+            "model = \"microfacet\"\nalpha = 0.0",
+            &[
+                "materials.floor.alpha",
+                "expected a number in 0.001..=1000, found 0",
+            ],
+        ),
+        (
+            "microfacet_eta_nan",
+            "model = \"microfacet\"\neta = nan",
+            &[
+                "materials.floor.eta",
+                "expected a number in 1..=10, found NaN",
+            ],
+        ),
+        (
+            "microfacet_k_s_negative",
+            "model = \"microfacet\"\nk_s = -1.0",
+            &[
+                "materials.floor.k_s",
+                "expected a number in 0..=10, found -1",
+            ],
+        ),
+        (
+            "microfacet_unknown_model",
+            "model = \"ward\"",
+            &["model", "expected phong or microfacet, found \"ward\""],
+        ),
+    ];
+    for (test, material, words) in cases {
+        scene_fails(test, &base_with(phong, material), words);
+    }
+}
+
+#[test]
 fn material_depth_func_unknown_word() {
     let text = base_with(
         "shininess = 24.0",

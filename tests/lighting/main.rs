@@ -6,4 +6,5 @@ mod common;
 
 mod bump_mapping;
 mod forward;
+mod microfacet;
 mod static_lighting;

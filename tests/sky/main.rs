@@ -3,5 +3,8 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod assignment;
 mod bunny;
+mod environment_reflection;
+mod skybox;
 mod sun_sky;

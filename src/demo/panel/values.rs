@@ -6,6 +6,7 @@
 //! parent; the camera's lens.
 
 use super::{shadow_knobs, structure};
+use crate::scene::material::Microfacet;
 use crate::scene::{Camera, LightGrid, LightKind, Object, Projection, Scene};
 use glam::Vec3;
 
@@ -120,8 +121,16 @@ pub fn materials(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::M
                     .id_salt(("material", i))
                     .show(ui, |ui| {
                         changed |= vec3(ui, "diffuse", &mut m.diffuse, 0.0..=10.0);
-                        changed |= vec3(ui, "specular", &mut m.specular, 0.0..=10.0);
-                        changed |= number(ui, "shininess", &mut m.shininess, 1.0..=4096.0);
+                        // Phong's terms, or notes 03's microfacet triple.
+                        if let Some(mf) = &mut m.microfacet {
+                            let (a, e, k) = (Microfacet::ALPHA, Microfacet::ETA, Microfacet::K_S);
+                            changed |= number(ui, "alpha", &mut mf.alpha, a.0..=a.1);
+                            changed |= number(ui, "eta", &mut mf.eta, e.0..=e.1);
+                            changed |= number(ui, "k_s", &mut mf.k_s, k.0..=k.1);
+                        } else {
+                            changed |= vec3(ui, "specular", &mut m.specular, 0.0..=10.0);
+                            changed |= number(ui, "shininess", &mut m.shininess, 1.0..=4096.0);
+                        }
                         // Below 1 the transparency pass draws it (notes 01 §4.5).
                         changed |= number(ui, "opacity", &mut m.opacity, 0.0..=1.0);
                         changed |= structure::texture(ui, scene, i, m);

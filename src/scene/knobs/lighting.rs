@@ -1,8 +1,9 @@
 //! The knobs of the lighting paths: the light-volume cutoff, the stencil
 //! volumes, the accumulation format, the deferred path's form, and tiled
-//! shading's grid and far field.
+//! shading's grid and far field; the G-buffer's material encoding.
 
 use super::{Kind, Knob, Value, index};
+use crate::scene::material::GBufferEncoding;
 use crate::scene::settings::{Accumulation, DeferredLights, Falloff};
 
 pub static CUTOFF: Knob = Knob {
@@ -118,6 +119,19 @@ pub static DEPTH_SLICES: Knob = Knob {
     set: |r, v| {
         if let Value::Count(n) = v {
             r.depth_slices = n;
+        }
+    },
+};
+
+pub static GBUFFER_ENCODING: Knob = Knob {
+    key: "render.gbuffer_encoding",
+    label: "G-buffer material",
+    help: "how the G-buffer holds a microfacet material's alpha, eta and k_s (notes 03, Geometry Pass): the report's reciprocal-and-flag scheme (gAlpha + gConvert) in 8 bits or in half floats, or the plain values in half floats (no gConvert)",
+    kind: Kind::Choice(GBufferEncoding::WORDS),
+    get: |r| Value::Choice(index(GBufferEncoding::ALL, r.gbuffer_encoding)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.gbuffer_encoding = GBufferEncoding::ALL[i];
         }
     },
 };

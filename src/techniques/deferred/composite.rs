@@ -130,10 +130,12 @@ impl RunPasses for Composite {
             p.set_bool("u_has_light", light.is_some());
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             p.set_vec3("u_ambient", f.scene.render.ambient);
+            super::ambient_light::bind_result(f, p);
             p.set_vec3("u_background", f.scene.render.background);
             p.set_bool("u_output_srgb", u.output_srgb);
             f.meshes.fullscreen.draw();
 
+            super::ambient_light::unbind_result(gl);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);

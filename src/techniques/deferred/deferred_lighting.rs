@@ -16,6 +16,7 @@
 //! off, back-face culling, glFrontFace per object, and restores them.
 
 use crate::frame::draw_list::DrawList;
+use crate::frame::environment::Environment;
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
@@ -206,6 +207,7 @@ impl DeferredLighting {
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_vec3("u_ambient", f.scene.render.ambient);
+            super::ambient_light::bind_result(f, p);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_bool("u_has_light", light.is_some());
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
@@ -216,6 +218,11 @@ impl DeferredLighting {
             p.set_bool("u_affine", affine);
             p.set_i32("u_diffuse_light", unit::LIGHT as i32);
             p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
+            // The environment reflective materials mirror (notes 03,
+            // Implementation), filtered across the cube map's faces.
+            p.set_vec3("u_eye", u.eye);
+            gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+            f.draws.environment.bind(gl, p);
             f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[0].id));
@@ -254,6 +261,9 @@ impl DeferredLighting {
             gl.disable(glow::STENCIL_TEST);
             DrawList::unbind_textures(gl);
             gl.bind_texture(glow::TEXTURE_2D, None);
+            super::ambient_light::unbind_result(gl);
+            Environment::unbind(gl);
+            gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             for u in [unit::LIGHT, unit::SPECULAR_LIGHT] {
                 gl.active_texture(glow::TEXTURE0 + u);
                 gl.bind_texture(glow::TEXTURE_2D, None);

@@ -69,28 +69,35 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
 
 fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
     let depth = gbuffer::depth_format(scene);
-    (layout(scene).map(|thin| gbuffer::target(thin, depth)))
+    let material = gbuffer::material_attachments(scene);
+    (layout(scene).map(|thin| gbuffer::target(thin, depth, &material)))
         .into_iter()
         .collect()
 }
 
 struct GBufferPass {
     program: Program,
+    /// The light pre-pass's: the material triple at locations 1 and 2.
+    thin: Program,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
+    let stages = [
+        (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
+        (glow::FRAGMENT_SHADER, "deferred/gbuffer.frag"),
+    ];
     Ok(Box::new(GBufferPass {
-        program: p.build(&[
-            (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
-            (glow::FRAGMENT_SHADER, "deferred/gbuffer.frag"),
-        ])?,
+        program: p.build(&stages)?,
+        thin: p.build_with(&stages, &[("THIN_GBUFFER", "1".into())])?,
     }))
 }
 
 impl RunPasses for GBufferPass {
     fn run(&self, _: &Pass, f: &Frame) {
-        let (gl, p, u) = (f.gl, &self.program, f.uniforms);
         let target = f.targets.get(gbuffer::NAME);
+        let thin = layout(f.scene) == Some(true);
+        let p = if thin { &self.thin } else { &self.program };
+        let (gl, u) = (f.gl, f.uniforms);
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
             let (x, y, w, h) = f.view.rect(target.width, target.height);
@@ -126,6 +133,8 @@ impl RunPasses for GBufferPass {
 
             p.use_program();
             p.set_mat4("u_view_projection", &u.view_projection);
+            // How gAlpha and gConvert hold the microfacet triple (notes 03).
+            p.set_i32("u_gbuffer_material", gbuffer::material_layout(target).1);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
             // Texture coordinates and vertex colours perspective-correct or

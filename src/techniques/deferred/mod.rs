@@ -11,6 +11,7 @@
 //! | prepass  | gbuffer.rs, thin | deferred_lighting.rs (volumes)         | deferred_lighting.rs |
 //! | tiled    | gbuffer.rs       | tiled_shading.rs (lights binned per tile), far_field.rs (the tails, at low resolution) | composite.rs |
 
+pub mod ambient_light;
 pub mod composite;
 pub mod deferred_lighting;
 pub mod deferred_shading;

@@ -22,6 +22,7 @@
 //! GL_CCW, no stencil test, no clip distance.
 
 use crate::frame::draw_list::DrawList;
+use crate::frame::environment::Environment;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -152,7 +153,13 @@ impl RunPasses for Forward {
                 // the scissor test (notes 01 §4.2, a scissor box per viewport).
                 gl.enable(glow::SCISSOR_TEST);
                 gl.scissor(x, y, w, h);
-                gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
+                // The skybox drawn first (sky/sky_first.rs) is the background.
+                let colour = if f.scene.sky_first() {
+                    0
+                } else {
+                    glow::COLOR_BUFFER_BIT
+                };
+                gl.clear(colour | glow::DEPTH_BUFFER_BIT);
                 gl.disable(glow::SCISSOR_TEST);
             }
             gl.enable(glow::CULL_FACE);
@@ -185,6 +192,10 @@ impl RunPasses for Forward {
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
             p.set_i32("u_light_map", unit::LIGHT_MAP as i32);
+            // The environment reflective materials mirror (notes 03,
+            // Implementation), filtered across the cube map's faces.
+            gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+            f.draws.environment.bind(gl, p);
             // Texture coordinates and vertex colours perspective-correct or
             // affine (notes 01 §4.1, §5.1).
             let affine = f.scene.render.interpolation == Interpolation::Affine;
@@ -233,6 +244,8 @@ impl RunPasses for Forward {
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);
             DrawList::unbind_textures(gl);
+            Environment::unbind(gl);
+            gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);

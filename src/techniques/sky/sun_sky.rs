@@ -43,7 +43,8 @@ pub const SUN_SKY: Technique = Technique {
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
-    let Some(sky) = &scene.sky else {
+    // A [skybox] draws the background instead (skybox.rs).
+    let (Some(sky), None) = (&scene.sky, &scene.skybox) else {
         return vec![];
     };
     let draws = format!(

@@ -1,0 +1,16 @@
+//! The sky's knob (notes 03, Implementation).
+
+use super::{Kind, Knob, Value};
+
+pub static SKY_FIRST: Knob = Knob {
+    key: "render.sky_first",
+    label: "sky first",
+    help: "draw the skybox before the opaque world with the depth test off, over every pixel, instead of last at z = w with GL_LEQUAL, where only the background is drawn (notes 03, Implementation; forward path)",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.sky_first),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.sky_first = b;
+        }
+    },
+};

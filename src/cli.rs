@@ -92,6 +92,11 @@ pub enum Command {
         path: Option<RenderPath>,
         #[arg(long)]
         lights: Option<usize>,
+        /// Also write the frame's data-flow diagram (passes, the targets
+        /// they read and write) to this file in Graphviz DOT; `dot -Tsvg`
+        /// draws it.
+        #[arg(long)]
+        dot: Option<PathBuf>,
     },
     /// List the scenes shipped inside gloss (usable from any directory by name).
     Scenes,

@@ -181,10 +181,18 @@ fn run(mut cli: Cli) -> Result<()> {
             scene,
             path,
             lights,
+            dot,
         }) => {
             let s = load_scene(&scene, &cli.set, path, lights)?;
             let unchecked = gloss::frame::check::check_without_gl(&s)?;
-            print!("{}", gloss::techniques::plan(&s));
+            let plan = gloss::techniques::plan(&s);
+            print!("{plan}");
+            if let Some(file) = dot {
+                let text = gloss::frame::plan_graph::dot(&plan, &s.name);
+                std::fs::write(&file, text)
+                    .with_context(|| format!("writing {}", file.display()))?;
+                println!("wrote the data-flow diagram to {}", file.display());
+            }
             let c = gloss::frame::culling::scene_stats(&s)?;
             println!(
                 "frustum culling ({}): the camera sees {} of {} opaque objects, {} culled, in {} sphere and box tests",

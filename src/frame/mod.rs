@@ -32,6 +32,7 @@ pub mod meshes;
 pub mod multisample;
 pub mod particles;
 pub mod plan;
+pub mod plan_graph;
 pub mod post;
 pub mod shadows;
 pub mod skins;

@@ -44,6 +44,10 @@ pub struct Pass {
     /// pixel, does not (it copies the G-buffer's depth only for the passes
     /// that come after it). A world image no pass needs depth from has none.
     pub needs_depth: bool,
+    /// The targets it reads (the data-flow diagram's edges into it,
+    /// src/frame/plan_graph.rs): declared by the passes of notes 03's
+    /// pipeline; empty where a pass does not say.
+    pub reads: Vec<&'static str>,
 }
 
 impl Pass {
@@ -66,7 +70,14 @@ impl Pass {
             value: 0,
             level: 0,
             needs_depth: true,
+            reads: Vec::new(),
         }
+    }
+
+    /// The same pass, reading `targets`.
+    pub fn reading(mut self, targets: &[&'static str]) -> Pass {
+        self.reads.extend_from_slice(targets);
+        self
     }
 
     /// The same pass, needing no depth-stencil buffer in its target.

@@ -244,7 +244,9 @@ pub fn step_pass(
     } else {
         format!("{what}: {io}")
     };
-    Pass::new(name, writes(scene, s).target, draws, code).about(i, s as u32)
+    Pass::new(name, writes(scene, s).target, draws, code)
+        .about(i, s as u32)
+        .reading(&[reads(scene, s).target])
 }
 
 /// One step of the chain as notes 01 §9 gives it: "a processing stage

@@ -127,4 +127,10 @@ fn bad_skies_are_refused_by_key() {
     assert!(e.contains("sky.intensity"), "{e}");
     let e = bad("[sky]\nturbidity = 3.0\n");
     assert!(e.contains("sun"), "{e}");
+    for disc in ["-0.1", "2.5", "nan"] {
+        let e = bad(&format!(
+            "[sky]\nsun = [0.0, 1.0, 0.0]\nsun_disc = {disc}\n"
+        ));
+        assert!(e.contains("sky.sun_disc") && e.contains("0..=2"), "{e}");
+    }
 }

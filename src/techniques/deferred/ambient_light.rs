@@ -98,7 +98,11 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         "1 full-screen triangle: SSAO, {} directions x 4 points within r = {} (bias {}), turned by a 4x4 tile",
         ao.samples, ao.radius, ao.bias
     );
-    let mut v = vec![Pass::new("ambient light", AMBIENT_OCCLUSION, draws, file!()).step(ESTIMATE)];
+    let mut v = vec![
+        Pass::new("ambient light", AMBIENT_OCCLUSION, draws, file!())
+            .step(ESTIMATE)
+            .reading(&[gbuffer::NAME]),
+    ];
     if ao.blur {
         let draws =
             "1 full-screen triangle: 4x4 depth-aware box blur of the AO (the tile's pattern)";
@@ -109,7 +113,8 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                 draws.into(),
                 file!(),
             )
-            .step(BLUR),
+            .step(BLUR)
+            .reading(&[AMBIENT_OCCLUSION, gbuffer::NAME]),
         );
     }
     v

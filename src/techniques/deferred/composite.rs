@@ -48,6 +48,12 @@ pub const COMPOSITE: Technique = Technique {
 };
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
+    // What it reads: the G-buffer, the accumulated light, the ambient occlusion.
+    let reads: Vec<&'static str> = [Some(gbuffer::NAME), Some(LIGHT_ACCUMULATION)]
+        .into_iter()
+        .chain([super::ambient_light::result_target(scene)])
+        .flatten()
+        .collect();
     match scene.render.path {
         RenderPath::Deferred | RenderPath::Volumes | RenderPath::Tiled => vec![
             Pass::new(
@@ -60,7 +66,8 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                 },
                 file!(),
             )
-            .without_depth(),
+            .without_depth()
+            .reading(&reads),
         ],
         RenderPath::Forward | RenderPath::Prepass => vec![],
     }

@@ -71,7 +71,13 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
             lights.len()
         ),
     };
-    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())]
+    let shadows = scene.lights.iter().any(|l| l.shadow.is_some());
+    let reads: &[&str] = if shadows {
+        &[gbuffer::NAME, "shadow map"]
+    } else {
+        &[gbuffer::NAME]
+    };
+    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!()).reading(reads)]
 }
 
 fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {

@@ -108,12 +108,14 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                     ),
                     file!(),
                 )
+                .reading(&[crate::frame::post::reads(scene, step).target])
                 .step(s)
                 .level(blur.level)
                 .about(i, step as u32),
             );
             v.push(
                 Pass::new("bloom blur h", blur.temp, format!("blur{k}, {at}"), file!())
+                    .reading(&[blur.target])
                     .step(s + 1)
                     .level(blur.level)
                     .about(i, step as u32),
@@ -125,6 +127,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                     format!("blur{k}, {at}"),
                     file!(),
                 )
+                .reading(&[blur.temp])
                 .step(s + 2)
                 .level(blur.level)
                 .about(i, step as u32),
@@ -152,6 +155,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                 step,
                 file!(),
             )
+            .reading(&blurs.iter().map(|b| b.target).take(1).collect::<Vec<_>>())
             .step(MERGE_STEP),
         );
     }

@@ -73,7 +73,11 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let draws = format!(
         "1 full-screen triangle, additive: reflectivity x the environment along reflect(-V, N) from the G-buffer ({n} reflective objects)"
     );
-    vec![Pass::new("skybox reflection", LIGHT_ACCUMULATION, draws, file!()).without_depth()]
+    vec![
+        Pass::new("skybox reflection", LIGHT_ACCUMULATION, draws, file!())
+            .without_depth()
+            .reading(&[gbuffer::NAME, "environment"]),
+    ]
 }
 
 /// With no lights no lighting pass makes the accumulation target: this

@@ -23,6 +23,7 @@ use crate::frame::targets::TargetDesc;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::Scene;
+use crate::scene::sky::SUN_ANGULAR_RADIUS;
 use anyhow::Result;
 use glam::Vec3;
 use glow::HasContext;
@@ -47,8 +48,13 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let (Some(sky), None) = (&scene.sky, &scene.skybox) else {
         return vec![];
     };
+    let disc = if sky.sun_disc > 0.0 {
+        format!(" and the sun's disc (irradiance {})", sky.sun_disc)
+    } else {
+        String::new()
+    };
     let draws = format!(
-        "1 full-screen triangle at z = w, GL_LEQUAL, depth writes off: the Preetham sky (turbidity {}) where nothing was drawn",
+        "1 full-screen triangle at z = w, GL_LEQUAL, depth writes off: the Preetham sky (turbidity {}){disc} where nothing was drawn",
         sky.turbidity
     );
     vec![Pass::new("sun-sky", world_target(scene), draws, file!())]
@@ -100,6 +106,10 @@ impl RunPasses for SunSky {
             p.set_vec3("u_zenith", Vec3::from(uniforms.zenith));
             p.set_vec3("u_sun", Vec3::from(uniforms.sun));
             p.set_f32("u_sky_intensity", sky.intensity);
+            // The sun's own disc, which the bloom spreads (0: none).
+            p.set_vec3("u_sun_disc", sky.sun_disc_radiance());
+            p.set_vec3("u_sun_direction", sky.sun);
+            p.set_f32("u_sun_cos_radius", SUN_ANGULAR_RADIUS.cos() as f32);
             p.set_bool("u_output_srgb", u.output_srgb);
             f.meshes.fullscreen.draw();
 

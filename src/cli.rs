@@ -82,6 +82,13 @@ pub enum Command {
         /// `gloss plan` numbers them) rather than at the end of the frame.
         #[arg(long, requires = "inspect")]
         after: Option<usize>,
+        /// Write one render target's attachment at the end of the frame
+        /// instead of the image: TARGET or TARGET.ATTACHMENT, as `gloss plan`
+        /// names them (gbuffer.normal_shininess, ambient_occlusion_blurred,
+        /// hdr). Made visible: normals as (n + 1) / 2, light sRGB-encoded
+        /// and clamped, data (gAlpha, gConvert, the AO) as stored.
+        #[arg(long, conflicts_with = "inspect")]
+        target: Option<String>,
     },
     /// Print GL_VERSION, GL_RENDERER, GLSL version, backend and context flags.
     Info,

@@ -47,11 +47,13 @@ fn render_to_png(
     debug: bool,
     out: &Path,
     inspect: Option<(Inspect, Option<usize>)>,
+    target: Option<&str>,
 ) -> Result<()> {
     let ctx = Headless::new(backend, debug)?;
     let mut r = render_scene(&ctx, scene, Output::Srgb8)?;
     let (w, h) = (r.width as u32, r.height as u32);
     let img = match inspect {
+        None if target.is_some() => r.read_target(target.unwrap_or_default())?,
         None => r.read_image(),
         Some((Inspect::Stencil, None)) => gloss::renderer::stencil_image(&r.read_stencil(), w, h),
         Some((Inspect::Stencil, Some(pass))) => {
@@ -130,7 +132,7 @@ fn run(mut cli: Cli) -> Result<()> {
                 scene.print_warnings(&scene.warnings());
                 let out = std::env::current_dir()?.join(format!("gloss-{}.png", scene.name));
                 let backend = headless_backend(cli.backend)?;
-                render_to_png(&scene, backend, cli.debug, &out, None)?;
+                render_to_png(&scene, backend, cli.debug, &out, None, None)?;
                 println!(
                     "no display: rendered {} headless ({backend}) to {}",
                     scene_path.display(),
@@ -148,6 +150,7 @@ fn run(mut cli: Cli) -> Result<()> {
             lights,
             inspect,
             after,
+            target,
         }) => {
             let mut s = load_scene(&scene, &cli.set, path, lights)?;
             if let Some(sh) = shading {
@@ -162,6 +165,7 @@ fn run(mut cli: Cli) -> Result<()> {
                 cli.debug,
                 &output,
                 inspect.map(|i| (i, after)),
+                target.as_deref(),
             )?;
             println!("wrote {}", output.display());
             Ok(())

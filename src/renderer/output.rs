@@ -159,3 +159,72 @@ impl Renderer {
         }
     }
 }
+
+impl Renderer {
+    /// Attachment `name` of a render target at the end of the frame (`gloss
+    /// render --target`): "gbuffer.albedo", or "hdr" for a target's first
+    /// colour attachment, as `gloss plan` names them. Made visible as an
+    /// 8-bit picture, top row first: a normal as (n + 1) / 2; light (a float
+    /// attachment other than the data ones) sRGB-encoded and clamped to 1;
+    /// data (gAlpha, gConvert, the AO) and 8-bit attachments as stored, one
+    /// channel as grey.
+    pub fn read_target(&self, name: &str) -> anyhow::Result<image::RgbaImage> {
+        let (target, attachment) = match name.split_once('.') {
+            Some((t, a)) => (t, Some(a)),
+            None => (name, None),
+        };
+        let all: Vec<&str> = self.plan.targets.iter().map(|t| t.name).collect();
+        let Some(desc) = self.plan.targets.iter().find(|t| t.name == target) else {
+            anyhow::bail!(
+                "--target {name}: this frame has no target {target:?}; it has {}",
+                all.join(", ")
+            );
+        };
+        let attachments: Vec<&str> = desc.colors.iter().map(|c| c.0).collect();
+        let index = match attachment {
+            None if !attachments.is_empty() => 0,
+            None => anyhow::bail!("--target {name}: {target} has no colour attachment"),
+            Some(a) => attachments.iter().position(|x| *x == a).ok_or_else(|| {
+                anyhow::anyhow!(
+                    "--target {name}: {target} has the attachments {}",
+                    attachments.join(", ")
+                )
+            })?,
+        };
+        let Some(fb) = self.targets.find(target) else {
+            anyhow::bail!(
+                "--target {name}: {target} keeps its images in mip levels (the bloom's), \
+                 which the demo's inspector shows"
+            );
+        };
+        let (attachment, format) = desc.colors[index];
+        let data = fb.read_rgba_f32(index as u32);
+        let (w, h) = (fb.width as u32, fb.height as u32);
+        let normal = attachment.starts_with("normal");
+        let stored = ["alpha", "convert", "ao"].contains(&attachment);
+        let float = !stored
+            && matches!(
+                format,
+                glow::RGBA16F | glow::RGBA32F | glow::R16F | glow::R32F | glow::RG16F
+            );
+        let grey = matches!(format, glow::R16F | glow::R32F | glow::R8);
+        Ok(image::RgbaImage::from_fn(w, h, |x, y| {
+            let i = (((h - 1 - y) * w + x) * 4) as usize;
+            let mut c = [data[i], data[i + 1], data[i + 2]];
+            if grey {
+                c = [c[0]; 3];
+            }
+            let c = c.map(|v| {
+                let v = if normal {
+                    v * 0.5 + 0.5
+                } else if float {
+                    lighting::srgb_encode(v)
+                } else {
+                    v
+                };
+                (v.clamp(0.0, 1.0) * 255.0).round() as u8
+            });
+            image::Rgba([c[0], c[1], c[2], 255])
+        }))
+    }
+}

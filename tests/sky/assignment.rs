@@ -192,3 +192,39 @@ fn the_data_flow_diagram_has_the_reports_arrows() {
         "docs/images/assignment-bunny.dot is stale: gloss plan scenes/assignment-bunny.toml --dot docs/images/assignment-bunny.dot"
     );
 }
+
+#[test]
+fn each_passes_target_can_be_written_as_a_picture() {
+    let mut scene = common::scene("assignment-bunny.toml");
+    scene.render.size = (160, 90);
+    let ctx = common::context(common::backend());
+    let r = gloss::renderer::render_scene(&ctx, &scene, Output::Srgb8).expect("renders");
+    // The ground at the bottom of the picture faces up: (0, 1, 0) shows as
+    // (n + 1) / 2 = (128, 255, 128).
+    let normals = r.read_target("gbuffer.normal_shininess").unwrap();
+    let p = normals.get_pixel(80, 88).0;
+    assert!(
+        p[0].abs_diff(128) <= 1 && p[1] == 255 && p[2].abs_diff(128) <= 1,
+        "the ground's normal shows as {p:?}"
+    );
+    // The AO is one channel, shown grey; the open ground is unoccluded.
+    let ao = r.read_target("ambient_occlusion_blurred").unwrap();
+    let a = ao.get_pixel(5, 88).0;
+    assert!(
+        a[0] == a[1] && a[1] == a[2] && a[0] == 255,
+        "open ground's AO shows as {a:?}"
+    );
+    // What cannot be written says what can.
+    let e = r.read_target("nope").unwrap_err().to_string();
+    assert!(
+        e.contains("no target \"nope\"") && e.contains("gbuffer"),
+        "{e}"
+    );
+    let e = r.read_target("gbuffer.nope").unwrap_err().to_string();
+    assert!(
+        e.contains("normal_shininess, albedo, specular, alpha, convert"),
+        "{e}"
+    );
+    let e = r.read_target("bloom_levels").unwrap_err().to_string();
+    assert!(e.contains("mip levels"), "{e}");
+}

@@ -19,6 +19,7 @@
 //! MSAA resolve plus FXAA), on the CPU clock around glFinish
 //! (src/frame/timing.rs).
 
+use super::headless;
 use super::{BenchArgs, Stats};
 use crate::gl::Headless;
 use crate::gl::program::Sources;
@@ -249,15 +250,8 @@ pub(super) fn run(args: &BenchArgs, scene_path: &Path, ctx: &Headless) -> Result
         let scene = variant(&base, msaa, fxaa)?;
         let image = render_linear(ctx, &scene, w, h)?;
         let error = error(&image, &reference, &edges)?;
-        let mut r = Renderer::new(
-            &ctx.gl,
-            &ctx.debug,
-            &scene,
-            &Sources::Embedded,
-            w as i32,
-            h as i32,
-        )
-        .with_context(|| format!("setting {label}"))?;
+        let mut r =
+            headless::renderer(ctx, &scene, (w, h)).with_context(|| format!("setting {label}"))?;
         r.timing = true;
         let samples = r
             .targets()

@@ -12,10 +12,10 @@
 //! world's: the image is written into the HDR target after every world pass,
 //! so the chain reads it.
 
+use super::headless;
 use crate::frame::Runs;
 use crate::frame::post::{self, HDR};
 use crate::gl::Headless;
-use crate::gl::program::Sources;
 use crate::image_compare::bloom_reference::{self, BloomParams};
 use crate::renderer::Renderer;
 use crate::scene::Scene;
@@ -114,7 +114,7 @@ pub fn bloom_image(ctx: &Headless, scene: &Scene, image: Option<&[f32]>) -> Resu
     if image.is_some_and(|i| i.len() != (w * h * 4) as usize) {
         bail!("bloom_image: the image is not {w}x{h} RGBA");
     }
-    let mut r = Renderer::new(&ctx.gl, &ctx.debug, &scene, &Sources::Embedded, wi, hi)?;
+    let mut r = headless::renderer(ctx, &scene, (w, h))?;
     let hdr = r.targets().get(HDR).colors[0].id;
     let gl = ctx.gl.clone();
     let write = |gl: &glow::Context| {

@@ -11,10 +11,9 @@
 //! and of the forward pass, on the CPU clock around glFinish.
 
 use super::aa::{LinearImage, error, render_linear};
+use super::headless;
 use super::{BenchArgs, Stats};
 use crate::gl::Headless;
-use crate::gl::program::Sources;
-use crate::renderer::Renderer;
 use crate::scene::Scene;
 use crate::scene::texturing::FilterOverride;
 use anyhow::{Context as _, Result, bail};
@@ -71,15 +70,8 @@ pub fn measure(
         scene.render.texture_filter = filter;
         let image = render_linear(ctx, &scene, w, h)?;
         let rmse = error(&image, reference, &none)?.rmse;
-        let mut r = Renderer::new(
-            &ctx.gl,
-            &ctx.debug,
-            &scene,
-            &Sources::Embedded,
-            w as i32,
-            h as i32,
-        )
-        .with_context(|| format!("filter {filter}"))?;
+        let mut r =
+            headless::renderer(ctx, &scene, (w, h)).with_context(|| format!("filter {filter}"))?;
         r.timing = true;
         let (mut frame, mut forward) = (Vec::new(), Vec::new());
         for f in 0..warmup + frames {

@@ -27,6 +27,7 @@ pub mod bound;
 mod csv;
 pub mod filtering;
 mod floor;
+mod headless;
 mod overdraw;
 pub mod pareto;
 mod particles;
@@ -46,9 +47,8 @@ pub use plot::{PLOT_SIZE, plot};
 pub use stats::Stats;
 pub use table::{BenchRow, speedup_vs_forward, table};
 
-use crate::gl::{Backend, Headless, program::Sources, query::TimerQuery};
+use crate::gl::{Backend, Headless, query::TimerQuery};
 use crate::image_compare::compare_rgba8;
-use crate::renderer::Renderer;
 use crate::scene::{RenderPath, Scene};
 use anyhow::{Context as _, Result, bail};
 use std::io::Write as _;
@@ -211,14 +211,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         if !references.iter().any(|(n, _)| *n == s.lights) {
             let mut rs = scene.clone();
             rs.render.path = RenderPath::Forward;
-            let mut r = Renderer::new(
-                &ctx.gl,
-                &ctx.debug,
-                &rs,
-                &Sources::Embedded,
-                w as i32,
-                h as i32,
-            )?;
+            let mut r = headless::renderer(&ctx, &rs, (w, h))?;
             r.render(&rs.camera.clone())?;
             references.push((s.lights, r.read_image()));
         }
@@ -301,15 +294,8 @@ fn measure(
     progress: &str,
 ) -> Result<BenchRow> {
     let (w, h) = scene.render.size;
-    let mut r = Renderer::new(
-        &ctx.gl,
-        &ctx.debug,
-        scene,
-        &Sources::Embedded,
-        w as i32,
-        h as i32,
-    )
-    .with_context(|| format!("setting {}", row.setting))?;
+    let mut r = headless::renderer(ctx, scene, (w, h))
+        .with_context(|| format!("setting {}", row.setting))?;
     r.timing = true;
     let query = if software {
         None

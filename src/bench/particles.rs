@@ -10,10 +10,9 @@
 //! The scene's emitter is kept; its rate is set so that `count` particles
 //! are alive, and the time to a full lifetime on.
 
+use super::headless;
 use super::{BenchArgs, Headless, Stats};
 use crate::frame::particles;
-use crate::gl::program::Sources;
-use crate::renderer::Renderer;
 use crate::scene::Scene;
 use crate::techniques::vertex_geometry::particles::pack;
 use anyhow::{Result, bail};
@@ -53,14 +52,7 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless) -> Result<()> 
                 s.particles = Some(p.clone());
                 s.set_time(p.lifetime + 0.25)?;
                 s.render.size = (w, h);
-                let mut r = Renderer::new(
-                    &ctx.gl,
-                    &ctx.debug,
-                    &s,
-                    &Sources::Embedded,
-                    w as i32,
-                    h as i32,
-                )?;
+                let mut r = headless::renderer(ctx, &s, (w, h))?;
                 r.timing = true;
                 let (mut pack_ms, mut pass_ms, mut frame_ms) = (Vec::new(), Vec::new(), Vec::new());
                 let alive = particles::alive(&p, s.animation.time);

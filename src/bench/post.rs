@@ -10,11 +10,10 @@
 //! A pass near 1x is bound by filling pixels; far above, by its own work
 //! per pixel (a blur's taps, bloom's levels).
 
+use super::headless;
 use super::{BenchArgs, Headless, Stats, add_pass_times};
 use crate::frame::Runs;
-use crate::gl::program::Sources;
 use crate::gl::texture::level_size;
-use crate::renderer::Renderer;
 use crate::scene::Scene;
 use crate::scene::post::chain;
 use crate::techniques::ALL;
@@ -35,14 +34,7 @@ struct PostTime {
 /// warm-up, in chain order, with the draws and pixels of its name.
 fn post_times(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<Vec<PostTime>> {
     let (w, h) = scene.render.size;
-    let mut r = Renderer::new(
-        &ctx.gl,
-        &ctx.debug,
-        scene,
-        &Sources::Embedded,
-        w as i32,
-        h as i32,
-    )?;
+    let mut r = headless::renderer(ctx, scene, (w, h))?;
     r.timing = true;
     let mut passes = Vec::new();
     for f in 0..args.warmup + args.frames.max(1) {

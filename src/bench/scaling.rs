@@ -16,14 +16,13 @@
 //! The images are not compared (each count is a different scene); the
 //! paths' errors are what `gloss bench` without `--scaling` measures.
 
+use super::headless;
 use super::plot::{ScalingSeries, plot_scaling};
 use super::{BenchArgs, BenchRow, measure};
 use crate::frame::clusters::{Grid, bin};
 use crate::frame::lights::{FrameLights, max_lights};
 use crate::gl::Headless;
-use crate::gl::program::Sources;
 use crate::lighting::attenuation;
-use crate::renderer::Renderer;
 use crate::scene::{DeferredLights, RenderPath, Scene};
 use crate::techniques::deferred::tiled_shading::light_bounds;
 use anyhow::{Result, bail};
@@ -84,14 +83,7 @@ fn with_lights(base: &Scene, count: usize) -> Result<(Scene, f32)> {
 fn mean_reaching(ctx: &Headless, scene: &Scene) -> Result<f32> {
     let s = on_path(scene, RenderPath::Tiled, false);
     let (w, h) = s.render.size;
-    let mut r = Renderer::new(
-        &ctx.gl,
-        &ctx.debug,
-        &s,
-        &Sources::Embedded,
-        w as i32,
-        h as i32,
-    )?;
+    let mut r = headless::renderer(ctx, &s, (w, h))?;
     r.render(&s.camera)?;
     let depth = r.read_depth();
     let inverse = (s.camera.projection(w as f32 / h as f32) * s.camera.view()).inverse();

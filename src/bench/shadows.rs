@@ -18,9 +18,9 @@
 //!   starts than the true one, along lines from the object's base into its
 //!   shadow, averaged.
 
+use super::headless;
 use crate::frame::views::View;
 use crate::gl::Headless;
-use crate::gl::program::Sources;
 use crate::image_compare::shadow_mask::ShadowMask;
 use crate::image_compare::shadow_metrics::{ShadowErrors, Visibility, contact_gap, pixel_line};
 use crate::lighting::shadow_reference::{SceneTriangles, world_points};
@@ -56,14 +56,7 @@ pub fn single_caster(scene: &Scene) -> Result<Scene> {
 
 fn draw(ctx: &Headless, scene: &Scene) -> Result<Renderer> {
     let (w, h) = scene.render.size;
-    let mut r = Renderer::new(
-        &ctx.gl,
-        &ctx.debug,
-        scene,
-        &Sources::Embedded,
-        w as i32,
-        h as i32,
-    )?;
+    let mut r = headless::renderer(ctx, scene, (w, h))?;
     r.render(&scene.camera.clone())?;
     Ok(r)
 }

@@ -15,8 +15,8 @@
 //! - "max error": the largest distance between a vertex the GPU skinned and
 //!   the CPU reference's, read back from the transform feedback buffers.
 
+use super::headless;
 use super::{BenchArgs, Headless, Stats};
-use crate::gl::program::Sources;
 use crate::renderer::Renderer;
 use crate::scene::{Scene, SkinMethod, SkinningOn};
 use anyhow::{Result, bail};
@@ -69,14 +69,7 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless) -> Result<()> 
             for on in [SkinningOn::Gpu, SkinningOn::Cpu] {
                 let mut s = copied(base, copies, method, on);
                 s.render.size = (w, h);
-                let mut r = Renderer::new(
-                    &ctx.gl,
-                    &ctx.debug,
-                    &s,
-                    &Sources::Embedded,
-                    w as i32,
-                    h as i32,
-                )?;
+                let mut r = headless::renderer(ctx, &s, (w, h))?;
                 r.timing = true;
                 let (mut pose_ms, mut pass_ms, mut frame_ms) = (Vec::new(), Vec::new(), Vec::new());
                 let frames = args.warmup + args.frames.max(1);

@@ -14,6 +14,7 @@
 //! 10th-90th percentiles of the frame and of the two SSAO passes, on the CPU
 //! clock around glFinish, and on a GPU also with GL_TIMESTAMP queries.
 
+use super::headless;
 use super::{BenchArgs, Stats};
 use crate::frame::gbuffer;
 use crate::gl::Headless;
@@ -99,14 +100,7 @@ pub fn error(gpu: &[f32], reference: &[Option<f32>]) -> AoError {
 /// and the geometry back.
 pub fn render_ao(ctx: &Headless, scene: &Scene) -> Result<AoFrame> {
     let (w, h) = scene.render.size;
-    let mut r = Renderer::new(
-        &ctx.gl,
-        &ctx.debug,
-        scene,
-        &Sources::Embedded,
-        w as i32,
-        h as i32,
-    )?;
+    let mut r = headless::renderer(ctx, scene, (w, h))?;
     r.render(&scene.camera)?;
     read(ctx, &r)
 }
@@ -198,15 +192,8 @@ pub fn measure(
     for &samples in counts {
         let mut scene = base.clone();
         scene.render.ambient_occlusion = Some(AmbientOcclusion { samples, ..ao });
-        let mut r = Renderer::new(
-            &ctx.gl,
-            &ctx.debug,
-            &scene,
-            &Sources::Embedded,
-            w as i32,
-            h as i32,
-        )
-        .with_context(|| format!("{samples} samples"))?;
+        let mut r = headless::renderer(ctx, &scene, (w, h))
+            .with_context(|| format!("{samples} samples"))?;
         r.render(&scene.camera)?;
         let got = read(ctx, &r)?;
         if reference_ao.is_none() {

@@ -86,7 +86,10 @@ pub enum Command {
         /// instead of the image: TARGET or TARGET.ATTACHMENT, as `gloss plan`
         /// names them (gbuffer.normal_shininess, ambient_occlusion_blurred,
         /// hdr). Made visible: normals as (n + 1) / 2, light sRGB-encoded
-        /// and clamped, data (gAlpha, gConvert, the AO) as stored.
+        /// and clamped, data (gAlpha, gConvert, the AO) as stored. Also
+        /// shadow_map.N (light N's map, a cube unfolded into a cross) and
+        /// TARGET.N for a target's mip level N (bloom_levels.1 .. 4), as the
+        /// demo's inspector draws them.
         #[arg(long, conflicts_with = "inspect")]
         target: Option<String>,
     },

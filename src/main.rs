@@ -4,6 +4,7 @@ use anyhow::{Context as _, Result, anyhow, bail};
 use clap::Parser as _;
 use gloss::assets;
 use gloss::cli::{Cli, Command, Inspect};
+use gloss::gl::program::Sources;
 use gloss::gl::{Backend, Headless};
 use gloss::renderer::{Output, render_scene};
 use gloss::scene::{RenderPath, Scene};
@@ -52,11 +53,15 @@ fn render_to_png(
     let ctx = Headless::new(backend, debug)?;
     let mut r = render_scene(&ctx, scene, Output::Srgb8)?;
     let (w, h) = (r.width as u32, r.height as u32);
-    let img = match inspect {
-        None if target.is_some() => r.read_target(target.unwrap_or_default())?,
-        None => r.read_image(),
-        Some((Inspect::Stencil, None)) => gloss::renderer::stencil_image(&r.read_stencil(), w, h),
-        Some((Inspect::Stencil, Some(pass))) => {
+    let img = match (inspect, target) {
+        (None, Some(name)) => {
+            gloss::demo::pictures::target_picture(&ctx.gl, &Sources::Embedded, &r, name)?
+        }
+        (None, None) => r.read_image(),
+        (Some((Inspect::Stencil, None)), _) => {
+            gloss::renderer::stencil_image(&r.read_stencil(), w, h)
+        }
+        (Some((Inspect::Stencil, Some(pass))), _) => {
             let stencil = r.stencil_after(&scene.camera, pass)?;
             gloss::renderer::stencil_image(&stencil, w, h)
         }

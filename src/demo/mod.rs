@@ -11,6 +11,7 @@
 //! and light-volume views in `shadow_views` and `volume_views`), `keys`,
 //! `screenshot`, `orbit` (the camera), `shaders` (live reload of glsl/),
 //! `present` (the blit to the window and the state restore after egui),
+//! `pictures` (`gloss render --target` for the shadow maps and mip levels),
 //! `post_chain` (the panel's chain edits checked, the chain's images named).
 
 mod actions;
@@ -23,6 +24,7 @@ mod keys;
 mod orbit;
 pub mod panel;
 mod panel_layer;
+pub mod pictures;
 pub mod post_chain;
 mod present;
 

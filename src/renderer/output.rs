@@ -193,8 +193,8 @@ impl Renderer {
         };
         let Some(fb) = self.targets.find(target) else {
             anyhow::bail!(
-                "--target {name}: {target} keeps its images in mip levels (the bloom's), \
-                 which the demo's inspector shows"
+                "--target {name}: {target} keeps its images in mip levels (the bloom's): \
+                 name one, such as {target}.1 (the demo's inspector draws it)"
             );
         };
         let (attachment, format) = desc.colors[index];

@@ -9,6 +9,7 @@ mod animation;
 mod compare;
 mod driver;
 mod panel;
+mod pictures;
 mod post_chain;
 mod robustness;
 mod save;

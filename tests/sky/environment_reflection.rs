@@ -5,7 +5,8 @@
 //! seamless) along the view ray reflected off the analytic sphere, on the
 //! forward path and on every deferred path, and forward equals each; the
 //! sky rendered into the cube map equals the CPU Preetham model in every
-//! texel; a reflective material with no environment is refused.
+//! texel; a reflective material with no environment is refused; a changed
+//! sky is drawn into the cube map again.
 
 use crate::common;
 use glam::{DVec3, Vec4};
@@ -195,4 +196,85 @@ fn the_plan_reflects_on_the_deferred_paths_and_a_material_with_no_environment_is
         &common::root().join("scenes/t.toml"),
     );
     assert!(format!("{:#}", e.unwrap_err()).contains("0..=1"));
+}
+
+/// The sky cube map is drawn again when the sky changes (the demo's panel
+/// edits it through `set_scene_values`): the reflections then equal those
+/// of a renderer made with the new sky from the start, and differ from the
+/// old sky's.
+#[test]
+fn the_sky_cube_map_follows_a_changed_sky() {
+    use gloss::gl::program::Sources;
+    use gloss::renderer::Renderer;
+    let ctx = common::context(common::backend());
+    let mut scene = common::scene("assignment-bunny.toml");
+    scene.render.size = (160, 90);
+    scene.post.clear();
+    let make = |s: &Scene| {
+        let mut r = Renderer::new(&ctx.gl, &ctx.debug, s, &Sources::Embedded, 160, 90).unwrap();
+        r.render(&s.camera).unwrap();
+        r
+    };
+    let mut live = make(&scene);
+    let before = live.read_image();
+    let mut changed = scene.clone();
+    let sky = changed.sky.as_mut().expect("the scene has a [sky]");
+    sky.sun = glam::Vec3::new(0.3, 0.8, 0.5).normalize();
+    sky.turbidity = 6.0;
+    live.set_scene_values(&changed).unwrap();
+    live.render(&changed.camera).unwrap();
+    let after = live.read_image();
+    let fresh = make(&changed).read_image();
+    let (mut moved, mut worst) = (0, 0u8);
+    for ((a, f), b) in after.pixels().zip(fresh.pixels()).zip(before.pixels()) {
+        for k in 0..3 {
+            worst = worst.max(a.0[k].abs_diff(f.0[k]));
+        }
+        moved += usize::from((0..3).any(|k| a.0[k].abs_diff(b.0[k]) > 8));
+    }
+    assert_eq!(
+        worst, 0,
+        "the changed renderer's image against a fresh one's"
+    );
+    assert!(
+        moved > 500,
+        "the new sky changes the picture ({moved} pixels)"
+    );
+    // Where the ball is: its reflection follows the sky, not only the
+    // background the sun-sky pass draws per pixel.
+    let ball = ball_pixels(&changed);
+    let reflected = (ball.iter())
+        .filter(|&&(x, y)| {
+            let (a, b) = (after.get_pixel(x, y).0, before.get_pixel(x, y).0);
+            (0..3).any(|k| a[k].abs_diff(b[k]) > 8)
+        })
+        .count();
+    assert!(
+        reflected * 2 > ball.len(),
+        "{reflected} of the ball's {} pixels changed with the sky",
+        ball.len()
+    );
+}
+
+/// The pixels (x, y from the top) well inside the silhouette of the
+/// scene's "ball" (a sphere at its object's position, its scale the
+/// radius), which stands clear of the bunny.
+fn ball_pixels(scene: &Scene) -> Vec<(u32, u32)> {
+    let ball = scene.objects.iter().find(|o| o.name == "ball").unwrap();
+    let (c, r) = (ball.position.as_dvec3(), f64::from(ball.scale.x));
+    let (w, h) = scene.render.size;
+    let mut v = Vec::new();
+    for y in 0..h as usize {
+        for x in 0..w as usize {
+            let (o, d) = pixel_ray(scene, x, y);
+            let oc = o - c;
+            let b = oc.dot(d);
+            // Well inside the silhouette: a margin of 10% of the radius.
+            if b * b - (oc.length_squared() - 0.81 * r * r) > 0.0 && b < 0.0 {
+                v.push((x as u32, h - 1 - y as u32));
+            }
+        }
+    }
+    assert!(v.len() > 50, "the ball covers {} pixels", v.len());
+    v
 }

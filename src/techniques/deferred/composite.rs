@@ -59,11 +59,18 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
             Pass::new(
                 "composite",
                 world_target(scene),
-                if scene.post.is_empty() {
-                    "1 full-screen triangle (ambient + light, sRGB encode)".into()
-                } else {
-                    "1 full-screen triangle (ambient + light, linear: a post chain follows)".into()
-                },
+                format!(
+                    "1 full-screen triangle ({}, {})",
+                    match super::ambient_light::result_target(scene) {
+                        Some(_) => "ambient x albedo x AO + light",
+                        None => "ambient x albedo + light",
+                    },
+                    if scene.post.is_empty() {
+                        "sRGB encode"
+                    } else {
+                        "linear: a post chain follows"
+                    }
+                ),
                 file!(),
             )
             .without_depth()

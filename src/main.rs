@@ -12,6 +12,13 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
+    // Rust ignores SIGPIPE, so printing into a closed pipe (`gloss plan |
+    // head`) fails and println! panics; like any Unix tool, end quietly instead.
+    #[cfg(unix)]
+    // SAFETY: before any thread starts; SIG_DFL is a valid disposition.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     std::panic::set_hook(Box::new(|info| {
         eprintln!(
             "gloss: internal error: {info}\nplease report it with the command that caused it"

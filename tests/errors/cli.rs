@@ -103,3 +103,24 @@ fn cli_render_window_backend() {
     contains_all(&stderr, &["renders headless", "--backend egl or osmesa"]);
     assert!(!out.exists());
 }
+
+/// Output into a pipe that closes early (`gloss plan SCENE | head -2`)
+/// ends gloss quietly, as it does any Unix tool: no "internal error".
+#[cfg(unix)]
+#[test]
+fn a_closed_pipe_ends_gloss_quietly() {
+    use std::process::Stdio;
+    let scene = gloss::assets::scene_path(std::path::Path::new("scenes/assignment-bunny.toml"));
+    let mut child = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([os("plan"), scene.as_os_str()])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("run gloss");
+    // Close the pipe before gloss has loaded the scene and printed a line.
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("internal error"), "{stderr}");
+    assert!(stderr.is_empty(), "gloss said: {stderr}");
+}

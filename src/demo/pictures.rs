@@ -63,10 +63,9 @@ pub fn target_picture(gl: &Gl, sources: &Sources, r: &Renderer, name: &str) -> R
     let Some(mips) = r.targets().mip(target) else {
         return r.read_target(name);
     };
-    let levels: Vec<u32> = mips.levels.iter().map(|l| l.level).collect();
-    let (first, last) = (levels[0], levels[levels.len() - 1]);
-    let level = number("a mip level", first)?;
-    if !levels.contains(&level) {
+    let level = number("a mip level", mips.first())?;
+    if mips.level(level).is_none() {
+        let (first, last) = (mips.first(), mips.last());
         bail!("--target {name}: {target} has the mip levels {first}..={last}");
     }
     let view = views(&r.plan, false, &[])

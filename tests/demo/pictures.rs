@@ -6,12 +6,13 @@
 //! sRGB-encoded. A name it cannot draw says what it can.
 
 use crate::common;
+use crate::shadow_views::{close, range, shown};
 use gloss::demo::pictures::target_picture;
-use gloss::demo::shadow_views::{BACKGROUND, NOTHING};
+use gloss::demo::shadow_views::BACKGROUND;
 use gloss::gl::Headless;
 use gloss::gl::program::Sources;
 use gloss::lighting::srgb_encode;
-use gloss::renderer::Renderer;
+use gloss::renderer::{Output, Renderer, render_scene};
 use glow::HasContext;
 
 /// Renders `name` at `size`, its shadow maps `texels` on a side.
@@ -23,10 +24,7 @@ fn rendered(ctx: &Headless, name: &str, size: (u32, u32), texels: u32) -> Render
             s.resolution = texels;
         }
     }
-    let (w, h) = (size.0 as i32, size.1 as i32);
-    let mut r = Renderer::new(&ctx.gl, &ctx.debug, &scene, &Sources::Embedded, w, h).unwrap();
-    r.render(&scene.camera).unwrap();
-    r
+    render_scene(ctx, &scene, Output::Srgb8).unwrap()
 }
 
 fn picture(ctx: &Headless, r: &Renderer, name: &str) -> anyhow::Result<image::RgbaImage> {
@@ -50,10 +48,7 @@ fn shadow_map_n_is_light_ns_cube_unfolded_into_the_cross() {
     assert_eq!(img.dimensions(), (512, 384));
     let map = &r.shadows().maps[0].1;
     let faces: Vec<Vec<f32>> = (0..6).map(|k| map.read(k)).collect();
-    let below = faces.iter().flatten().filter(|&&d| d < 1.0);
-    let (lo, hi) = below.fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &d| {
-        (lo.min(d), hi.max(d))
-    });
+    let (lo, hi) = range(faces.iter().flatten());
     assert!(lo < hi, "the map holds depth: {lo}..{hi}");
     // Cells of the cross (column, row from the top): +x, -x, +y, -y, +z, -z.
     let cells = [(2, 1), (0, 1), (1, 0), (1, 2), (1, 1), (3, 1)];
@@ -68,14 +63,10 @@ fn shadow_map_n_is_light_ns_cube_unfolded_into_the_cross() {
         for (s, t) in (0..n).flat_map(|t| (0..n).map(move |s| (s, t))) {
             let (x, y) = (cx * f + 2 * s as u32, cy * f + 2 * t as u32);
             let d = faces[face][t * n + s];
-            let want = if d >= 1.0 {
-                NOTHING
-            } else {
-                [(((d - lo) / (hi - lo)) * 255.0).round() as u8; 3]
-            };
+            let want = shown(d, (lo, hi));
             let got = rgb(img.get_pixel(x, y));
             assert!(
-                got.iter().zip(want).all(|(a, b)| a.abs_diff(b) <= 1),
+                close(got, want),
                 "face {face} texel ({s}, {t}) = {d}: ({x}, {y}) shows {got:?}, not {want:?}"
             );
             shades.insert(got[0]);
@@ -128,7 +119,7 @@ fn target_n_is_mip_level_n_stretched_texel_by_texel() {
                     .map(|k| (srgb_encode(texels[i + k]).clamp(0.0, 1.0) * 255.0).round() as u8);
                 let got = rgb(img.get_pixel(x, y));
                 assert!(
-                    got.iter().zip(want).all(|(a, b)| a.abs_diff(b) <= 1),
+                    close(got, want),
                     "{name}: ({x}, {y}) shows {got:?}; texel ({s}, {t}) gives {want:?}"
                 );
                 lit += usize::from(want != [0; 3]);
@@ -143,15 +134,14 @@ fn a_name_it_cannot_draw_says_what_it_can() {
     let ctx = common::context(common::backend());
     let r = rendered(&ctx, "shadows-point.toml", (64, 48), 16);
     let light = r.shadows().maps[0].0.light;
-    let err = |name: &str| format!("{:#}", picture(&ctx, &r, name).unwrap_err());
-    let e = err("shadow_map");
+    let e = err_of(&ctx, &r, "shadow_map");
     assert!(e.contains("name a light's index"), "{e}");
-    let e = err("shadow_map.9");
+    let e = err_of(&ctx, &r, "shadow_map.9");
     assert!(
         e.contains("light 9 casts no shadow") && e.contains(&format!("that do: {light}")),
         "{e}"
     );
-    let e = err("shadow_map.x");
+    let e = err_of(&ctx, &r, "shadow_map.x");
     assert!(e.contains("\"x\" is not a light's index"), "{e}");
     let r = rendered(&ctx, "bloom.toml", (64, 48), 16);
     let e = err_of(&ctx, &r, "bloom_levels.7");

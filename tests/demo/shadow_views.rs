@@ -104,7 +104,7 @@ fn inspect(ctx: &gloss::gl::Headless, name: &str) -> Inspected {
 }
 
 /// What a stored value looks like in the view.
-fn shown(d: f32, (lo, hi): (f32, f32)) -> [u8; 3] {
+pub(crate) fn shown(d: f32, (lo, hi): (f32, f32)) -> [u8; 3] {
     if d >= 1.0 {
         return NOTHING;
     }
@@ -112,12 +112,12 @@ fn shown(d: f32, (lo, hi): (f32, f32)) -> [u8; 3] {
     [g.round() as u8; 3]
 }
 
-fn close(a: [u8; 3], b: [u8; 3]) -> bool {
+pub(crate) fn close(a: [u8; 3], b: [u8; 3]) -> bool {
     a.iter().zip(b).all(|(x, y)| x.abs_diff(y) <= 1)
 }
 
 /// The least and greatest of `values` below 1.0.
-fn range<'a>(values: impl Iterator<Item = &'a f32>) -> (f32, f32) {
+pub(crate) fn range<'a>(values: impl Iterator<Item = &'a f32>) -> (f32, f32) {
     let below = values.filter(|&&d| d < 1.0);
     below.fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &d| {
         (lo.min(d), hi.max(d))

@@ -12,6 +12,7 @@
 //! No GL here: the draw list keeps a tree for the renderer, and `gloss
 //! plan` builds one from the scene (`scene_stats`).
 
+use crate::geometry::MeshData;
 use crate::math::frustum::{Containment, Frustum, transform_aabb};
 use crate::scene::{MeshSource, Scene};
 use anyhow::Result;
@@ -151,7 +152,7 @@ pub fn scene_stats(scene: &Scene) -> Result<CullStats> {
             Some(b) => *b,
             None => {
                 let data = crate::scene::meshes::mesh_data(&o.mesh)?;
-                let b = crate::frame::draw_list::mesh_bounds(&data);
+                let b = mesh_bounds(&data);
                 boxes.insert(o.mesh.clone(), b);
                 b
             }
@@ -166,4 +167,21 @@ pub fn scene_stats(scene: &Scene) -> Result<CullStats> {
         .map(|o| !scene.materials[o.material].is_transparent() && o.mirror.is_none())
         .collect();
     Ok(tree.visible(&Frustum::from_view_projection(&vp), &wanted).1)
+}
+
+/// The axis-aligned box around the mesh's vertices (a point at the origin
+/// for an empty mesh).
+pub fn mesh_bounds(data: &MeshData) -> (Vec3, Vec3) {
+    let mut lo = Vec3::splat(f32::INFINITY);
+    let mut hi = Vec3::splat(f32::NEG_INFINITY);
+    for v in &data.vertices {
+        let p = Vec3::from(v.position);
+        lo = lo.min(p);
+        hi = hi.max(p);
+    }
+    if lo.cmple(hi).all() {
+        (lo, hi)
+    } else {
+        (Vec3::ZERO, Vec3::ZERO)
+    }
 }

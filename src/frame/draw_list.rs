@@ -6,10 +6,9 @@
 //! passes skip the `transparent` items; the transparency pass draws them.
 
 use crate::frame::billboards::BillboardDraws;
-use crate::frame::culling::{CullStats, CullTree};
+use crate::frame::culling::{CullStats, CullTree, mesh_bounds};
 use crate::frame::skins::SkinDraw;
 use crate::frame::texturing::TextureSamplers;
-use crate::geometry::MeshData;
 use crate::gl::Gl;
 use crate::gl::mesh::Mesh;
 use crate::gl::program::Program;
@@ -110,8 +109,8 @@ impl DrawList {
         let mut items = Vec::new();
         let mut bounds = Vec::new();
         let mut skins = Vec::new();
-        // Static lighting: the light maps, baked now (src/frame/draw_textures.rs).
-        let mut light_maps = super::draw_textures::bake_light_maps(gl, scene)?;
+        // Static lighting: the light maps, baked now (src/frame/light_maps.rs).
+        let mut light_maps = crate::frame::light_maps::bake_light_maps(gl, scene)?;
         for (object, o) in scene.objects.iter().enumerate() {
             let mesh = match mesh_index.get(&o.mesh) {
                 // A skinned object poses its own copy of the skin.
@@ -367,22 +366,5 @@ pub fn normal_matrix(model: &Mat4) -> Mat3 {
     match math::normal_matrix(model) {
         Some(n) => n,
         None => math::cofactor(model),
-    }
-}
-
-/// The axis-aligned box around the mesh's vertices (a point at the origin
-/// for an empty mesh).
-pub fn mesh_bounds(data: &MeshData) -> (Vec3, Vec3) {
-    let mut lo = Vec3::splat(f32::INFINITY);
-    let mut hi = Vec3::splat(f32::NEG_INFINITY);
-    for v in &data.vertices {
-        let p = Vec3::from(v.position);
-        lo = lo.min(p);
-        hi = hi.max(p);
-    }
-    if lo.cmple(hi).all() {
-        (lo, hi)
-    } else {
-        (Vec3::ZERO, Vec3::ZERO)
     }
 }

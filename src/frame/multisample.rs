@@ -11,8 +11,7 @@
 //! differ, which gloss does not do; `render.msaa` is ignored there
 //! (docs/fragment_tests/msaa.md).
 
-use crate::frame::post::{HDR, HDR_FORMAT};
-use crate::frame::targets::{Depth, TargetDesc};
+use crate::frame::targets::{Depth, HDR, HDR_FORMAT, TargetDesc};
 use crate::scene::{RenderPath, Scene};
 
 /// The multisampled twin of the world image.

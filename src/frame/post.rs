@@ -22,7 +22,7 @@
 
 use crate::frame::Frame;
 use crate::frame::multisample;
-use crate::frame::plan::Pass;
+use crate::frame::pass::Pass;
 use crate::frame::targets::{Depth, OUTPUT, TargetDesc, Targets};
 use crate::frame::uniforms::unit;
 use crate::gl::program::Program;
@@ -32,13 +32,9 @@ use crate::scene::post::{ChainForm, MAX_POST_PASSES, PostPass};
 use glam::Mat4;
 use glow::HasContext;
 
-/// The lit scene, linear and unclamped, when a post chain follows.
-pub const HDR: &str = "hdr";
-/// The HDR target's colour format: half floats hold light up to 65504 with
-/// 11 significant bits (0.05 % steps), which 8 bits (and 256 lights adding
-/// up past 1.0) cannot; 32-bit floats would double the bandwidth of every
-/// post pass for precision no display shows.
-pub const HDR_FORMAT: u32 = glow::RGBA16F;
+// The lit scene's target and format live with the other target names
+// (src/frame/targets.rs), below the multisampled twin that also uses them.
+pub use crate::frame::targets::{HDR, HDR_FORMAT};
 /// The ping-pong form's one framebuffer, with its two textures.
 pub const PING_PONG: &str = "post_ping_pong";
 /// The most steps a chain has (every entry two steps).

@@ -15,6 +15,13 @@ use glow::HasContext;
 pub const OUTPUT: &str = "output";
 /// Where lighting passes add up light (HDR, black clear).
 pub const LIGHT_ACCUMULATION: &str = "light_accumulation";
+/// The lit scene, linear and unclamped, when a post chain follows.
+pub const HDR: &str = "hdr";
+/// The HDR target's colour format: half floats hold light up to 65504 with
+/// 11 significant bits (0.05 % steps), which 8 bits (and 256 lights adding
+/// up past 1.0) cannot; 32-bit floats would double the bandwidth of every
+/// post pass for precision no display shows.
+pub const HDR_FORMAT: u32 = glow::RGBA16F;
 
 /// A target's depth attachment.
 #[derive(Clone, Debug, PartialEq)]

@@ -11,7 +11,7 @@
 use crate::frame::draw_list::DrawList;
 use crate::frame::lights::FrameLights;
 use crate::frame::meshes::FrameMeshes;
-use crate::frame::plan::Pass;
+use crate::frame::pass::Pass;
 use crate::frame::shadows::ShadowMaps;
 use crate::frame::targets::{TargetDesc, Targets};
 use crate::frame::uniforms::FrameUniforms;

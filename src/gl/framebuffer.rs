@@ -2,6 +2,9 @@
 
 use super::Gl;
 use super::texture::Texture;
+// Kept here for the readers that import it from the framebuffer (it lives
+// with the texture, below the framebuffer: src/gl/texture.rs).
+pub use super::texture::bytemuck_f32;
 use anyhow::{Result, anyhow, bail};
 use glow::HasContext;
 
@@ -193,11 +196,6 @@ impl Framebuffer {
         let img = image::RgbaImage::from_raw(w as u32, h as u32, raw).expect("size matches");
         image::imageops::flip_vertical(&img)
     }
-}
-
-pub fn bytemuck_f32(v: &mut [f32]) -> &mut [u8] {
-    // f32 has no padding and any byte pattern is a valid f32.
-    unsafe { std::slice::from_raw_parts_mut(v.as_mut_ptr() as *mut u8, std::mem::size_of_val(v)) }
 }
 
 /// The name of a glCheckFramebufferStatus result.

@@ -294,7 +294,7 @@ impl Texture {
                 level as i32,
                 glow::RGBA,
                 glow::FLOAT,
-                glow::PixelPackData::Slice(Some(super::framebuffer::bytemuck_f32(&mut out))),
+                glow::PixelPackData::Slice(Some(bytemuck_f32(&mut out))),
             );
             self.gl.bind_texture(glow::TEXTURE_2D, None);
         }
@@ -356,4 +356,10 @@ impl Drop for Texture {
             super::live::freed(super::live::Kind::Texture);
         }
     }
+}
+
+/// The bytes of `v`, for glReadPixels and glGetTexImage into floats.
+pub fn bytemuck_f32(v: &mut [f32]) -> &mut [u8] {
+    // f32 has no padding and any byte pattern is a valid f32.
+    unsafe { std::slice::from_raw_parts_mut(v.as_mut_ptr() as *mut u8, std::mem::size_of_val(v)) }
 }

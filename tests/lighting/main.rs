@@ -6,5 +6,6 @@ mod common;
 
 mod bump_mapping;
 mod forward;
+mod gouraud;
 mod microfacet;
 mod static_lighting;

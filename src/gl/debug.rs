@@ -83,7 +83,9 @@ impl DebugLog {
 }
 
 /// With checks on, before a draw: is any texture bound to a texture unit
-/// also attached to the framebuffer being drawn into? Sampling it there is a
+/// (on any of its targets: 2D, cube map, array, multisample, 3D, ...) also
+/// attached to the framebuffer being drawn into (a face of a cube map, a
+/// layer of an array, a multisampled image)? Sampling it there is a
 /// feedback loop, undefined in GL 3.3 (§4.4.3) even where a driver forgives
 /// it, so it is reported as an error at the next `DebugLog::check`. Only
 /// queries state (glGet*), changes none.
@@ -124,6 +126,9 @@ pub fn feedback_loops(gl: &glow::Context) -> Vec<String> {
                 attached.push((at, name));
             }
         }
+        if attached.is_empty() {
+            return Vec::new();
+        }
         let active = gl.get_parameter_i32(glow::ACTIVE_TEXTURE);
         let units = gl
             .get_parameter_i32(glow::MAX_COMBINED_TEXTURE_IMAGE_UNITS)
@@ -131,20 +136,53 @@ pub fn feedback_loops(gl: &glow::Context) -> Vec<String> {
         let mut found = Vec::new();
         for u in 0..units as u32 {
             gl.active_texture(glow::TEXTURE0 + u);
-            let bound = gl.get_parameter_i32(glow::TEXTURE_BINDING_2D);
-            if bound == 0 {
-                continue;
-            }
-            for &(at, name) in &attached {
-                if name == bound {
-                    found.push(format!(
-                        "feedback loop: texture {bound} is bound to texture unit {u} and attached to the draw framebuffer {fb} at {at:#x}"
-                    ));
+            for (binding, target) in BINDINGS {
+                let bound = gl.get_parameter_i32(binding);
+                if bound == 0 {
+                    continue;
+                }
+                for &(at, name) in &attached {
+                    if name == bound {
+                        found.push(format!(
+                            "feedback loop: texture {bound} is bound as {target} to texture unit {u} and attached to the draw framebuffer {fb} at {}",
+                            attachment_name(at)
+                        ));
+                    }
                 }
             }
         }
         gl.active_texture(active as u32);
         found
+    }
+}
+
+/// Every texture target a unit can hold a texture on in GL 3.3 core, as
+/// (its binding query, its name). Texture names are shared by all
+/// targets, so a match on any of them is the attached texture.
+const BINDINGS: [(u32, &str); 9] = [
+    (glow::TEXTURE_BINDING_2D, "GL_TEXTURE_2D"),
+    (glow::TEXTURE_BINDING_CUBE_MAP, "GL_TEXTURE_CUBE_MAP"),
+    (glow::TEXTURE_BINDING_2D_ARRAY, "GL_TEXTURE_2D_ARRAY"),
+    (
+        glow::TEXTURE_BINDING_2D_MULTISAMPLE,
+        "GL_TEXTURE_2D_MULTISAMPLE",
+    ),
+    (
+        glow::TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY,
+        "GL_TEXTURE_2D_MULTISAMPLE_ARRAY",
+    ),
+    (glow::TEXTURE_BINDING_3D, "GL_TEXTURE_3D"),
+    (glow::TEXTURE_BINDING_1D, "GL_TEXTURE_1D"),
+    (glow::TEXTURE_BINDING_1D_ARRAY, "GL_TEXTURE_1D_ARRAY"),
+    (glow::TEXTURE_BINDING_RECTANGLE, "GL_TEXTURE_RECTANGLE"),
+];
+
+/// The name of a framebuffer attachment point.
+fn attachment_name(at: u32) -> String {
+    match at {
+        glow::DEPTH_ATTACHMENT => "GL_DEPTH_ATTACHMENT".to_string(),
+        glow::STENCIL_ATTACHMENT => "GL_STENCIL_ATTACHMENT".to_string(),
+        c => format!("GL_COLOR_ATTACHMENT{}", c - glow::COLOR_ATTACHMENT0),
     }
 }
 

@@ -9,6 +9,7 @@ mod animation;
 mod clip_planes;
 mod culling;
 mod face_culling;
+mod feedback;
 mod particles;
 mod passes;
 mod plan;

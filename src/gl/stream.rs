@@ -14,11 +14,43 @@
 //!   asked for the old way), then glBufferSubData.
 //!
 //! The buffer grows (doubling) when a frame needs more than it holds.
+//! `write` picks the way and says which one ran (`Upload`): a refused map
+//! falls back to glBufferSubData, and the caller reports it; each thread
+//! counts the writes `write` made of each kind (`uploads_on_this_thread`),
+//! so a test can tell that a frame really mapped.
 
 use super::Gl;
 use anyhow::{Result, anyhow};
 use glow::HasContext;
 use std::cell::Cell;
+
+/// How one write reached the buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Upload {
+    /// Through glMapBufferRange's pointer.
+    Mapped,
+    /// With glBufferSubData, as asked.
+    SubData,
+    /// glMapBufferRange gave no pointer: written with glBufferSubData.
+    MapRefused,
+}
+
+/// The writes this thread made, by kind.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct UploadCounts {
+    pub mapped: u64,
+    pub subdata: u64,
+    pub map_refused: u64,
+}
+
+thread_local! {
+    static UPLOADS: Cell<UploadCounts> = Cell::new(UploadCounts::default());
+}
+
+/// The writes made by stream buffers on this thread so far.
+pub fn uploads_on_this_thread() -> UploadCounts {
+    UPLOADS.with(Cell::get)
+}
 
 pub struct StreamBuffer {
     gl: Gl,
@@ -94,6 +126,42 @@ impl StreamBuffer {
             self.gl.bind_buffer(glow::ARRAY_BUFFER, None);
             ok
         }
+    }
+
+    /// Replace the contents: through a mapped pointer if `map` (falling back
+    /// to glBufferSubData if the GL refuses to map), else with
+    /// glBufferSubData. Returns the way it went.
+    pub fn write(&self, bytes: &[u8], map: bool) -> Upload {
+        let how = if !map {
+            self.write_subdata(bytes);
+            Upload::SubData
+        } else if self.write_mapped(bytes) {
+            Upload::Mapped
+        } else {
+            self.write_subdata(bytes);
+            Upload::MapRefused
+        };
+        UPLOADS.with(|u| {
+            let mut c = u.get();
+            match how {
+                Upload::Mapped => c.mapped += 1,
+                Upload::SubData => c.subdata += 1,
+                Upload::MapRefused => c.map_refused += 1,
+            }
+            u.set(c);
+        });
+        how
+    }
+
+    /// The buffer's first `len` bytes, read back with glGetBufferSubData.
+    pub fn read_back(&self, len: usize) -> Vec<u8> {
+        let mut out = vec![0u8; len.min(self.capacity.get())];
+        unsafe {
+            self.gl.bind_buffer(glow::ARRAY_BUFFER, Some(self.vbo));
+            self.gl.get_buffer_sub_data(glow::ARRAY_BUFFER, 0, &mut out);
+            self.gl.bind_buffer(glow::ARRAY_BUFFER, None);
+        }
+        out
     }
 
     /// Replace the contents with glBufferData (orphaning) and glBufferSubData.

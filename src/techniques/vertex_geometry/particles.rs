@@ -29,12 +29,12 @@ use crate::frame::post::world_target;
 use crate::frame::targets::TargetDesc;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
-use crate::gl::stream::StreamBuffer;
+use crate::gl::stream::{StreamBuffer, Upload};
 use crate::scene::Scene;
 use crate::scene::particles::{ParticleBlend, Particles};
 use anyhow::Result;
 use glow::HasContext;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 
 pub const PARTICLES: Technique = Technique {
     name: "particles",
@@ -97,6 +97,8 @@ struct ParticlePass {
     quad_buffer: StreamBuffer,
     /// The bytes of the last frame, reused.
     bytes: RefCell<Vec<u8>>,
+    /// Whether a refused map was already reported.
+    map_refused: Cell<bool>,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -115,6 +117,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         point_buffer: StreamBuffer::new(p.gl, &[(0, 4, 0)], 16)?,
         quad_buffer: StreamBuffer::new(p.gl, &[(0, 3, 0), (1, 2, 12), (2, 1, 20)], 24)?,
         bytes: RefCell::new(Vec::new()),
+        map_refused: Cell::new(false),
     }))
 }
 
@@ -147,8 +150,13 @@ impl RunPasses for ParticlePass {
                 alive.len() * 6,
             )
         };
-        if !(ps.map && buffer.write_mapped(&bytes)) {
-            buffer.write_subdata(&bytes);
+        // Notes 01 §1.3: through a mapped pointer, or glBufferSubData; a
+        // refused map is written the second way and said, once.
+        if buffer.write(&bytes, ps.map) == Upload::MapRefused && !self.map_refused.replace(true) {
+            eprintln!(
+                "gloss: warning: particles: glMapBufferRange refused the {}-byte buffer; written with glBufferSubData instead (particles.map = true has no effect on this GL)",
+                bytes.len()
+            );
         }
         let target = f.targets.get(world_target(f.scene));
         unsafe {

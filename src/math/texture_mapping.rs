@@ -78,6 +78,20 @@ pub fn nearest_level(lambda: f64, last: u32) -> u32 {
     }
 }
 
+/// The two levels GL_LINEAR_MIPMAP_LINEAR (trilinear) reads at `lambda`
+/// > 0 and the weight of the second (GL 3.3 §3.8.11): levels floor(lambda)
+/// and the next, mixed by lambda's fraction; at or past the last level,
+/// the last alone. GL_LINEAR_MIPMAP_NEAREST (bilinear_mip) reads
+/// `nearest_level` alone.
+pub fn linear_levels(lambda: f64, last: u32) -> (u32, u32, f64) {
+    let lambda = lambda.max(0.0);
+    if lambda >= last as f64 {
+        return (last, last, 0.0);
+    }
+    let d1 = lambda.floor();
+    (d1 as u32, d1 as u32 + 1, lambda - d1)
+}
+
 /// Bytes of a full mip chain of a `width` x `height` texture at
 /// `bytes_per_texel`: every level down to 1 x 1 (about 4/3 of level 0).
 pub fn mip_chain_bytes(width: u32, height: u32, bytes_per_texel: u32) -> u64 {
@@ -137,5 +151,15 @@ mod tests {
         assert_eq!(mip_chain_bytes(256, 256, 4), 4 * 87381);
         assert_eq!(mip_chain_bytes(1, 1, 4), 4);
         assert_eq!(mip_chain_bytes(4, 1, 1), 4 + 2 + 1);
+    }
+
+    #[test]
+    fn trilinear_reads_the_two_levels_around_lambda() {
+        assert_eq!(linear_levels(2.25, 8), (2, 3, 0.25));
+        assert_eq!(linear_levels(0.75, 8), (0, 1, 0.75));
+        assert_eq!(linear_levels(-1.0, 8), (0, 1, 0.0));
+        assert_eq!(linear_levels(7.5, 8), (7, 8, 0.5));
+        assert_eq!(linear_levels(8.0, 8), (8, 8, 0.0));
+        assert_eq!(linear_levels(30.0, 8), (8, 8, 0.0));
     }
 }

@@ -11,6 +11,7 @@ mod filtering;
 mod hard_cases;
 mod interpolation;
 mod mip_mapping;
+mod trilinear;
 mod wrap;
 
 use gloss::scene::Scene;

@@ -14,14 +14,13 @@ use glam::{Vec3, Vec4};
 use gloss::frame::texturing::LEVEL_COLORS;
 use gloss::math::texture_mapping::{lod, nearest_level};
 use gloss::renderer::Output;
+use gloss::scene::Scene;
 
-#[test]
-fn each_pixel_shows_the_level_lambda_predicts() {
-    let mut s = common::scene("texture-filtering.toml");
-    s.render.mip_colors = true;
-    s.render.texture_filter = gloss::scene::texturing::FilterOverride::NearestMip;
-    let r = common::render(&s, Output::Srgb8);
-    let (w, h) = (r.width as i64, r.height as i64);
+/// For each pixel of the floor (x, y from the bottom), the four level of
+/// detail estimates over its 2 x 2 quad (both rows' du/dx with both
+/// columns' dv/dy, as the rasteriser may take them), for a texture of
+/// `size` texels; None off the floor. Indexed y * w + x.
+pub fn quad_lambdas(s: &Scene, w: i64, h: i64, size: f64) -> Vec<Option<[f64; 4]>> {
     let floor = &s.objects[0];
     let t = s.materials[floor.material].texturing;
     let inverse = (s.camera.projection(w as f32 / h as f32) * s.camera.view()).inverse();
@@ -48,28 +47,54 @@ fn each_pixel_shows_the_level_lambda_predicts() {
         let (u, v) = (0.5 + 0.5 * local.x as f64, 0.5 - 0.5 * local.z as f64);
         Some((u * t.uv_scale[0] as f64, v * t.uv_scale[1] as f64))
     };
-    let (mut checked, mut wrong, mut levels) = (0usize, Vec::new(), [0usize; 9]);
-    let mut floor_pixels = 0usize;
+    let mut out = Vec::with_capacity((w * h) as usize);
     for y in 0..h {
         for x in 0..w {
-            let Some(_) = uv(x as f64 + 0.5, y as f64 + 0.5) else {
+            if uv(x as f64 + 0.5, y as f64 + 0.5).is_none() {
+                out.push(None);
                 continue;
-            };
-            floor_pixels += 1;
-            // The pixel's 2 x 2 quad: both rows' du/dx and both columns' dv/dy.
+            }
             let (x0, y0) = ((x & !1) as f64 + 0.5, (y & !1) as f64 + 0.5);
             let corners =
                 [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)].map(|(i, j)| uv(x0 + i, y0 + j));
             let [Some(a), Some(b), Some(c), Some(d)] = corners else {
+                out.push(Some([f64::NAN; 4]));
                 continue;
             };
-            let mut lambdas = Vec::new();
+            let mut lambdas = [0.0; 4];
+            let mut k = 0;
             for (l, r) in [(a, b), (c, d)] {
                 for (lo, hi) in [(a, c), (b, d)] {
                     let (dudx, dvdx) = (r.0 - l.0, r.1 - l.1);
                     let (dudy, dvdy) = (hi.0 - lo.0, hi.1 - lo.1);
-                    lambdas.push(lod(dudx, dvdx, dudy, dvdy, 256.0, 256.0));
+                    lambdas[k] = lod(dudx, dvdx, dudy, dvdy, size, size);
+                    k += 1;
                 }
+            }
+            out.push(Some(lambdas));
+        }
+    }
+    out
+}
+
+#[test]
+fn each_pixel_shows_the_level_lambda_predicts() {
+    let mut s = common::scene("texture-filtering.toml");
+    s.render.mip_colors = true;
+    s.render.texture_filter = gloss::scene::texturing::FilterOverride::NearestMip;
+    let r = common::render(&s, Output::Srgb8);
+    let (w, h) = (r.width as i64, r.height as i64);
+    let all = quad_lambdas(&s, w, h, 256.0);
+    let (mut checked, mut wrong, mut levels) = (0usize, Vec::new(), [0usize; 9]);
+    let mut floor_pixels = 0usize;
+    for y in 0..h {
+        for x in 0..w {
+            let Some(lambdas) = all[(y * w + x) as usize] else {
+                continue;
+            };
+            floor_pixels += 1;
+            if lambdas[0].is_nan() {
+                continue;
             }
             let level = nearest_level(lambdas[0], 8);
             // The level switches at lambda = k + 1/2.

@@ -10,6 +10,16 @@ use gloss::scene::{DepthFunc, RenderPath, Scene};
 use std::path::Path;
 
 fn panes(func: DepthFunc) -> Scene {
+    panes_at(
+        func,
+        "position = [0.0, 0.0, -1.0]\nrotation = [90.0, 0.0, 0.0]",
+        "rotation = [90.0, 0.0, 0.0]",
+    )
+}
+
+/// The red pane (placed by `front`) drawn first with GL_LESS, then the
+/// blue pane (placed by `back`) with `func`, in the file's order.
+fn panes_at(func: DepthFunc, back: &str, front: &str) -> Scene {
     let text = format!(
         r#"
 [camera]
@@ -23,6 +33,7 @@ far = 20.0
 [render]
 size = [48, 36]
 ambient = [0.6, 0.6, 0.6]
+sort_opaque = false
 
 [materials.red]
 diffuse = [0.9, 0.1, 0.05]
@@ -35,15 +46,14 @@ depth_func = "{}"
 name = "front"
 mesh = "plane"
 material = "red"
-rotation = [90.0, 0.0, 0.0]
+{front}
 scale = [2.0, 1.0, 2.0]
 
 [[objects]]
 name = "back"
 mesh = "plane"
 material = "blue"
-position = [0.0, 0.0, -1.0]
-rotation = [90.0, 0.0, 0.0]
+{back}
 scale = [2.0, 1.0, 2.0]
 "#,
         func.name()
@@ -78,6 +88,47 @@ fn every_depth_function_per_material_as_the_cpu_predicts() {
                     } else {
                         "fails against"
                     },
+                    out.display()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_second_pass_at_equal_depth_passes_with_lequal_and_not_with_less() {
+    // Notes 01 §4.4 / 05: a second pass over the same surface meets depths
+    // equal to its own. Both panes are the same slanted plane (the same
+    // vertices through the same matrices, so the same window depth at
+    // every pixel, varying across it): the blue one drawn second shows
+    // where func.passes(d, d), i.e. for <=, =, >= and always, and is
+    // hidden for <, >, != and never. Every pixel of the pane is checked,
+    // forward and deferred.
+    let slant = "rotation = [60.0, 25.0, 0.0]";
+    for &func in DepthFunc::ALL {
+        let blue_wins = func.passes(0.5, 0.5);
+        for path in [RenderPath::Forward, RenderPath::Deferred] {
+            let mut scene = panes_at(func, slant, slant);
+            scene.render.path = path;
+            let img = common::render(&scene, Output::Srgb8).image;
+            let (mut pane, mut wrong) = (0, 0);
+            for p in img.pixels() {
+                let (red, blue) = (
+                    p[0] as i32 > p[2] as i32 + 60,
+                    p[2] as i32 > p[0] as i32 + 60,
+                );
+                if red || blue {
+                    pane += 1;
+                    wrong += usize::from(blue != blue_wins);
+                }
+            }
+            if pane < 300 || wrong > 0 {
+                let out =
+                    common::out_dir().join(format!("depth-coplanar-{func}-{}.png", path.name()));
+                img.save(&out).unwrap();
+                panic!(
+                    "{func} ({path:?}): {wrong} of {pane} pane pixels show the wrong pane; equal depths {} (image {})",
+                    if blue_wins { "pass" } else { "fail" },
                     out.display()
                 );
             }

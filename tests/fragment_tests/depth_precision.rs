@@ -8,7 +8,7 @@ use crate::common;
 use glam::Vec3;
 use gloss::math::depth::{DEPTH_BITS, resolvable_difference};
 use gloss::renderer::Output;
-use gloss::scene::Scene;
+use gloss::scene::{DepthFunc, Scene};
 
 /// Pixels showing the back (red) quad, and pixels showing either quad; the
 /// image is written under target/test-output as `name`.
@@ -167,5 +167,39 @@ fn camera_near_is_a_knob_on_the_command_line() {
     assert!(
         text.contains(&format!("{dz:.3e}")),
         "{text}\nwants dz(50) = {dz:.3e}"
+    );
+}
+
+#[test]
+fn with_lequal_the_quad_drawn_second_wins_the_ties() {
+    // The scene's lequal variant (`--set render.depth_func=lequal`), near
+    // 0.01: the quads share depth values over most of the image (above).
+    // Under GL_LESS the red quad, drawn first, keeps every tie and shows in
+    // stripes; under GL_LEQUAL the green quad, drawn second and in front,
+    // passes wherever its depth is not greater than the red one's, which
+    // the geometry says is everywhere: no red pixel.
+    let mut base = common::scene("z-fighting.toml");
+    base.camera.near = 0.01;
+    let mut counts = Vec::new();
+    for func in [DepthFunc::Less, DepthFunc::Lequal] {
+        let mut scene = base.clone();
+        scene.render.depth_func = func;
+        let (red, any, path) = wrong_pixels(&scene, &format!("z-fighting-{func}"));
+        eprintln!("{func}: {red} of {any} quad pixels show the back quad");
+        assert!(any > 50_000, "{path}: the quads cover only {any} pixels");
+        counts.push((red, any, path));
+    }
+    let (less, lequal) = (&counts[0], &counts[1]);
+    assert!(
+        less.0 * 100 > less.1,
+        "{}: under GL_LESS only {} of {} pixels show the back quad",
+        less.2,
+        less.0,
+        less.1
+    );
+    assert_eq!(
+        lequal.0, 0,
+        "{}: under GL_LEQUAL the back quad shows",
+        lequal.2
     );
 }

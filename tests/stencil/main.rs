@@ -17,4 +17,5 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod functions;
 mod mirror;

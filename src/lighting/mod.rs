@@ -145,4 +145,59 @@ mod tests {
             assert!((srgb_decode(srgb_encode(x)) - x).abs() < 1e-5);
         }
     }
+
+    fn light(kind: LightKind, position: Vec3, direction: Vec3) -> Light {
+        Light {
+            kind,
+            position,
+            direction,
+            color: Vec3::new(1.0, 0.5, 0.25),
+            intensity: 2.0,
+            kc: 1.0,
+            kl: 0.09,
+            kq: 0.032,
+            inner_angle: 20.0,
+            outer_angle: 30.0,
+            shadow: None,
+            range: None,
+        }
+    }
+
+    #[test]
+    fn a_point_lights_factor_is_the_notes_attenuation() {
+        // Notes 04: 1 / (Kc + Kl d + Kq d^2): by hand at d = 2, and against
+        // src/lighting/attenuation.rs (the formula the light volumes are
+        // sized by) at other distances.
+        let l = light(LightKind::Point, Vec3::new(0.0, 2.0, 0.0), Vec3::NEG_Y);
+        let (f, dir, _) = light_factor_with(&l, Vec3::ZERO, None);
+        assert!((f - 1.0 / (1.0 + 0.18 + 0.128)).abs() < 1e-6, "{f}");
+        assert!((dir - Vec3::Y).length() < 1e-6, "{dir}");
+        for d in [0.5f32, 3.0, 7.25, 20.0] {
+            let (f, _, _) = light_factor_with(&l, Vec3::new(0.0, 2.0 - d, 0.0), None);
+            let want = attenuation::attenuation(l.kc, l.kl, l.kq, d);
+            assert!(
+                (f - want).abs() <= 1e-6 * want,
+                "d = {d}: {f} against {want}"
+            );
+        }
+    }
+
+    #[test]
+    fn blinn_phong_worked_by_hand() {
+        // A sun 45 degrees up, the eye straight above the point: the halfway
+        // vector lies 22.5 degrees from the normal, so the specular light is
+        // the radiance times cos(22.5)^s, the diffuse light the radiance
+        // times cos 45.
+        let l = light(
+            LightKind::Directional,
+            Vec3::ZERO,
+            Vec3::new(-1.0, -1.0, 0.0).normalize(),
+        );
+        let (d, s) = phong_light_with(&l, Vec3::ZERO, Vec3::Y, Vec3::Y, 8.0, None);
+        let r = l.radiance();
+        let c45 = std::f32::consts::FRAC_1_SQRT_2;
+        let c22 = (std::f32::consts::PI / 8.0).cos();
+        assert!((d - r * c45).abs().max_element() < 1e-5, "{d}");
+        assert!((s - r * c22.powi(8)).abs().max_element() < 1e-5, "{s}");
+    }
 }

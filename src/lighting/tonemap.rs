@@ -46,8 +46,10 @@ mod tests {
         // Reinhard of 1 is one half; the exposure curve of ln 2 is one half.
         assert!((tonemap(ToneOperator::Reinhard, 1.0, 1.0) - 0.5).abs() < 1e-7);
         assert!((tonemap(ToneOperator::Exposure, 1.0, 2f32.ln()) - 0.5).abs() < 1e-7);
-        // The ACES fit's shoulder saturates below x = 20.
+        // The ACES fit's shoulder saturates below x = 20; at x = 1 it is
+        // (2.51 + 0.03) / (2.43 + 0.59 + 0.14), worked by hand.
         assert_eq!(tonemap(ToneOperator::Aces, 1.0, 20.0), 1.0);
+        assert!((tonemap(ToneOperator::Aces, 1.0, 1.0) - 2.54 / 3.16).abs() < 1e-6);
     }
 
     #[test]

@@ -16,4 +16,5 @@ mod common;
 mod culling;
 mod hard_cases;
 mod paths;
+mod pcf;
 mod reference;

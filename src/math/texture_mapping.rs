@@ -78,11 +78,11 @@ pub fn nearest_level(lambda: f64, last: u32) -> u32 {
     }
 }
 
-/// The two levels GL_LINEAR_MIPMAP_LINEAR (trilinear) reads at `lambda`
-/// > 0 and the weight of the second (GL 3.3 §3.8.11): levels floor(lambda)
-/// and the next, mixed by lambda's fraction; at or past the last level,
-/// the last alone. GL_LINEAR_MIPMAP_NEAREST (bilinear_mip) reads
-/// `nearest_level` alone.
+/// The two levels GL_LINEAR_MIPMAP_LINEAR (trilinear) reads at a positive
+/// `lambda` and the weight of the second (GL 3.3 §3.8.11): levels
+/// floor(lambda) and the next, mixed by lambda's fraction; at or past the
+/// last level, the last alone. GL_LINEAR_MIPMAP_NEAREST (bilinear_mip)
+/// reads `nearest_level` alone.
 pub fn linear_levels(lambda: f64, last: u32) -> (u32, u32, f64) {
     let lambda = lambda.max(0.0);
     if lambda >= last as f64 {

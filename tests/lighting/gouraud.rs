@@ -135,7 +135,7 @@ fn references(s: &Scene) -> Vec<Reference> {
                 .iter()
                 .all(|(dx, dy)| {
                     hit(cx + dx, cy + dy)
-                        .and_then(|q| triangle_of(q))
+                        .and_then(&triangle_of)
                         .is_some_and(|(u, _)| u == t)
                 });
             if !inside {

@@ -22,6 +22,7 @@ const LAYERS: &[(&str, u32)] = &[
     ("renderer", 7),
     ("bench", 8),
     ("demo", 8),
+    ("trace", 8),
     ("cli", 9),
 ];
 

@@ -105,7 +105,10 @@ pub(super) fn record(function: &'static str, args: &[(Kind, Raw)], result: Optio
         let mut r = r.borrow_mut();
         let mut shown: Vec<String> = args.iter().map(|(k, v)| v.show(*k)).collect();
         name_uniforms(&mut r, function, args, &mut shown, result);
-        let result = result.map(|v| v.show(Kind::Num));
+        let result = result.map(|v| match v {
+            Raw::Ptr(_) => v.show(Kind::Ptr),
+            _ => v.show(Kind::Num),
+        });
         let pass = r.pass.clone();
         r.calls.push(Call {
             function,

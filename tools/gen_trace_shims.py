@@ -110,7 +110,7 @@ def main():
     with open(os.path.join(crate, "src/gl/trace/names.rs"), "w") as f:
         f.write(head + "\n/// The GL constants gloss's source names, by value, with the groups of\n"
                 "/// gl.xml each belongs to; where two share a value, the more often written first.\n"
-                "pub const NAMES: &[(u32, &str, &[&str])] = &[\n" + "\n".join(names(glow, os.path.join(crate, "src"))) + "\n];\n")
+                "#[rustfmt::skip]\npub const NAMES: &[(u32, &str, &[&str])] = &[\n" + "\n".join(names(glow, os.path.join(crate, "src"))) + "\n];\n")
 
 
 main()

@@ -52,7 +52,11 @@ impl Request {
                 "--pass" => r.filter.pass = Some(value()?.to_string()),
                 "--size" => {
                     let v = value()?;
-                    r.size = Some(crate::bench::parse_size(v).map_err(|e| anyhow!(e))?);
+                    let size = v
+                        .split_once('x')
+                        .and_then(|(w, h)| Some((w.parse().ok()?, h.parse().ok()?)));
+                    r.size =
+                        Some(size.ok_or_else(|| anyhow!("--size {v}: expected WIDTHxHEIGHT"))?);
                 }
                 "--set" => r.set.push(value()?.to_string()),
                 "--first-frame" => r.first = true,

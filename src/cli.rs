@@ -112,4 +112,27 @@ pub enum Command {
     Scenes,
     /// Measure speed against error for render paths, light counts and cutoffs.
     Bench(crate::bench::BenchArgs),
+    /// List one frame's GL calls in order: each with its arguments as GL
+    /// names, the source line that made it, and its pass, technique and
+    /// notes section (docs/trace.md).
+    Trace {
+        scene: PathBuf,
+        /// Keep only the passes of this technique (as `gloss plan` and the
+        /// docs name it: light_volumes, shadow_map, ...).
+        #[arg(long)]
+        technique: Option<String>,
+        /// Keep only the passes of this name (lighting, gbuffer, ...).
+        #[arg(long)]
+        pass: Option<String>,
+        /// WIDTHxHEIGHT (default: the scene's render.size)
+        #[arg(long, value_parser = crate::bench::parse_size)]
+        size: Option<(u32, u32)>,
+        /// Markdown, as docs/ shows it.
+        #[arg(long)]
+        markdown: bool,
+        /// The first frame (with what is drawn only when something changed,
+        /// such as the sky's cube map) rather than the second.
+        #[arg(long)]
+        first_frame: bool,
+    },
 }

@@ -13,7 +13,7 @@
 //! | 5 | `frame` | the plan, draw list, lights, targets, uniforms, timing |
 //! | 6 | `techniques` | one file per technique, by chapter, and the registry |
 //! | 7 | `renderer` | runs the plan |
-//! | 8 | `bench`, `demo` | the tools |
+//! | 8 | `bench`, `demo`, `trace` | the tools |
 //! | 9 | `cli` | the command line as clap parses it; `src/main.rs` runs it |
 
 pub mod assets;
@@ -29,3 +29,4 @@ pub mod math;
 pub mod renderer;
 pub mod scene;
 pub mod techniques;
+pub mod trace;

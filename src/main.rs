@@ -228,6 +228,33 @@ fn run(mut cli: Cli) -> Result<()> {
             );
             Ok(())
         }
+        Some(Command::Trace {
+            scene,
+            technique,
+            pass,
+            size,
+            markdown,
+            first_frame,
+        }) => {
+            gloss::gl::trace::enable();
+            let ctx = Headless::new(headless_backend(cli.backend)?, cli.debug)?;
+            let mut s = load_scene(&scene, &cli.set, None, None)?;
+            if let Some(sz) = size {
+                s.render.size = sz;
+            }
+            let calls = if first_frame {
+                gloss::trace::trace_first_frame(&ctx, &s)?
+            } else {
+                gloss::trace::trace_frame(&ctx, &s)?
+            };
+            let filter = gloss::trace::listing::Filter { technique, pass };
+            gloss::trace::docs::kept(&calls, &filter)?;
+            print!(
+                "{}",
+                gloss::trace::listing::render(&calls, &filter, markdown)
+            );
+            Ok(())
+        }
         Some(Command::Scenes) => {
             for s in assets::shipped_scenes() {
                 println!("{s}");

@@ -61,8 +61,8 @@ pub fn create(debug: bool) -> Result<(glow::Context, Box<dyn std::any::Any>)> {
         .context("could not make the EGL context current without a surface")?;
     let gl = unsafe {
         glow::Context::from_loader_function(|name| {
-            let name = CString::new(name).expect("GL names have no NUL");
-            display.get_proc_address(&name) as *const _
+            let c_name = CString::new(name).expect("GL names have no NUL");
+            super::trace::wrap(name, display.get_proc_address(&c_name) as *const _)
         })
     };
     Ok((

@@ -22,6 +22,7 @@ pub mod skin_vertices;
 pub mod stream;
 pub mod texture;
 pub mod texture_buffer;
+pub mod trace;
 pub mod window;
 
 use anyhow::{Result, bail};

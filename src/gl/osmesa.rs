@@ -141,7 +141,7 @@ pub fn create() -> Result<(glow::Context, Box<dyn std::any::Any>)> {
     }
     let gl = unsafe {
         glow::Context::from_loader_function(|name| match CString::new(name) {
-            Ok(name) => get_proc(name.as_ptr()),
+            Ok(c_name) => super::trace::wrap(name, get_proc(c_name.as_ptr())),
             Err(_) => std::ptr::null(),
         })
     };

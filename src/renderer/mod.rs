@@ -4,17 +4,18 @@
 //! each. What a pass does lives in its technique's file (src/techniques/).
 
 mod output;
+mod passes;
 
+use output::target_descs;
 pub use output::{Output, stencil_color, stencil_image};
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_lights_fit, max_lights};
 use crate::frame::meshes::FrameMeshes;
-use crate::frame::multisample;
 use crate::frame::plan::{FramePlan, Pass};
 use crate::frame::post::world_image;
 use crate::frame::shadows::ShadowMaps;
-use crate::frame::targets::{OUTPUT, TargetDesc, Targets};
+use crate::frame::targets::{OUTPUT, Targets};
 use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
 use crate::frame::uniforms::FrameUniforms;
 use crate::frame::views::View;
@@ -60,6 +61,8 @@ pub struct Renderer {
     /// queries are trustworthy (not on llvmpipe).
     pub gpu_timers: bool,
     pub last_times: PassTimes,
+    /// Whether each pass is a KHR_debug group (passes.rs).
+    debug_groups: bool,
 }
 
 impl Renderer {
@@ -137,6 +140,7 @@ impl Renderer {
                 gl.get_parameter_string(glow::RENDERER)
             }),
             last_times: PassTimes::default(),
+            debug_groups: passes::has_debug_groups(gl),
         };
         r.build_planned_techniques()?;
         r.upload_lights();
@@ -333,7 +337,7 @@ impl Renderer {
         let aspect = self.width as f32 / self.height as f32;
         (self.shadows).update(&self.scene, &self.draws, camera, aspect);
         let mut timer = PassTimer::new(&self.gl, self.timing, self.gpu_timers);
-        for pass in &self.plan.passes {
+        for (i, pass) in self.plan.passes.iter().enumerate() {
             let frame = Frame {
                 gl: &self.gl,
                 scene: &self.scene,
@@ -345,8 +349,9 @@ impl Renderer {
                 meshes: &self.meshes,
                 shadows: &self.shadows,
             };
-            let technique = self.techniques[pass.technique].as_ref();
-            technique.expect("built for its pass").run(pass, &frame);
+            let technique = self.techniques[pass.technique].as_deref();
+            let technique = technique.expect("built for its pass");
+            passes::run_pass(i + 1, pass, technique, &frame, self.debug_groups);
             timer.mark(pass.name);
             after_pass(pass);
         }
@@ -358,26 +363,6 @@ impl Renderer {
         self.debug.check(&self.gl, "the frame")?;
         Ok(())
     }
-}
-
-/// The plan's targets, with the output's colour format as `output` asks
-/// (and its multisampled twin's, which is resolved into it).
-fn target_descs(plan: &FramePlan, output: Output) -> Vec<TargetDesc> {
-    let mut descs = plan.targets.clone();
-    let twin = multisample::twins_output(&plan.targets);
-    for d in &mut descs {
-        // The plan says RGBA8 or SRGB8_ALPHA8; error measurements want RGBA32F.
-        if d.name == OUTPUT && output == Output::Linear32F {
-            d.colors[0].1 = output.format();
-        }
-    }
-    let format = (descs.iter().find(|d| d.name == OUTPUT)).map(|d| d.colors[0].1);
-    for d in &mut descs {
-        if let (true, Some(format)) = (d.name == multisample::MSAA && twin, format) {
-            d.colors[0].1 = format;
-        }
-    }
-    descs
 }
 
 /// Build a renderer for `scene` at its own size on a headless context and

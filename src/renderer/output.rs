@@ -2,6 +2,9 @@
 //! as linear floats (for error measurements).
 
 use super::Renderer;
+use crate::frame::multisample;
+use crate::frame::plan::FramePlan;
+use crate::frame::targets::{OUTPUT, TargetDesc};
 use crate::lighting;
 
 /// How the final image is stored.
@@ -227,4 +230,24 @@ impl Renderer {
             image::Rgba([c[0], c[1], c[2], 255])
         }))
     }
+}
+
+/// The plan's targets, with the output's colour format as `output` asks
+/// (and its multisampled twin's, which is resolved into it).
+pub(super) fn target_descs(plan: &FramePlan, output: Output) -> Vec<TargetDesc> {
+    let mut descs = plan.targets.clone();
+    let twin = multisample::twins_output(&plan.targets);
+    for d in &mut descs {
+        // The plan says RGBA8 or SRGB8_ALPHA8; error measurements want RGBA32F.
+        if d.name == OUTPUT && output == Output::Linear32F {
+            d.colors[0].1 = output.format();
+        }
+    }
+    let format = (descs.iter().find(|d| d.name == OUTPUT)).map(|d| d.colors[0].1);
+    for d in &mut descs {
+        if let (true, Some(format)) = (d.name == multisample::MSAA && twin, format) {
+            d.colors[0].1 = format;
+        }
+    }
+    descs
 }

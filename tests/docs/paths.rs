@@ -92,6 +92,11 @@ fn repository_files() -> Vec<String> {
 pub fn clean_path(token: &str) -> String {
     let token = token.trim_matches(|c: char| "\"'(),;:[]".contains(c));
     let token = token.split("::").next().unwrap_or(token);
+    // A source line, as the trace names it: `src/x.rs:12`.
+    let token = match token.rsplit_once(':') {
+        Some((path, line)) if !line.is_empty() && line.chars().all(|c| c.is_ascii_digit()) => path,
+        _ => token,
+    };
     let mut out = String::new();
     let mut in_placeholder = false;
     for c in token.chars() {

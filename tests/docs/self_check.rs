@@ -25,6 +25,7 @@ fn the_checks_themselves() {
         "src/math/mod.rs"
     );
     assert_eq!(clean_path("tests/golden/<scene>.png"), "tests/golden/*.png");
+    assert_eq!(clean_path("src/gl/mesh.rs:159"), "src/gl/mesh.rs");
     assert!(wildcard("forward_flat.*", "forward_flat.geom"));
     assert!(!wildcard("forward_flat.*", "forward.frag"));
     assert_eq!(normalize(Path::new("docs"), "../../x"), None);

@@ -44,6 +44,10 @@ pub struct DrawItem {
     pub texture: Option<usize>,
     /// The material's normal map (notes 01 §8.4), if it has one.
     pub normal_map: Option<usize>,
+    /// The normal map's x and y are multiplied by it (`Material::normal_scale`).
+    pub normal_scale: f32,
+    /// The material's specular map, if it has one (`Material::specular_map`).
+    pub specular_map: Option<usize>,
     /// The object's baked light map (notes 01 §8.2), if it has one.
     pub light_map: Option<usize>,
     /// How the texture is sampled, and the uv transform (notes 01 §5).
@@ -107,6 +111,7 @@ impl DrawList {
         let mut textures = Vec::new();
         // Keyed by file and colour space: one PNG may be both.
         let mut texture_index: HashMap<(PathBuf, bool), usize> = HashMap::new();
+        let mut with_alpha: HashMap<(Option<PathBuf>, PathBuf), usize> = HashMap::new();
         let mut items = Vec::new();
         let mut bounds = Vec::new();
         let mut skins = Vec::new();
@@ -132,6 +137,30 @@ impl DrawList {
                 }
             };
             let m = &scene.materials[o.material];
+            // An alpha map becomes the diffuse texture's alpha (one texture).
+            let mut combined = None;
+            if let Some(a) = &m.alpha_map {
+                let key = (m.diffuse_texture.clone(), a.clone());
+                combined = Some(match with_alpha.get(&key) {
+                    Some(&i) => i,
+                    None => {
+                        let img = crate::gl::image_file::load_rgba8_with_alpha(
+                            m.diffuse_texture.as_deref(),
+                            a,
+                        )?;
+                        textures.push(Texture::from_rgba8(
+                            gl,
+                            img.width(),
+                            img.height(),
+                            img.as_raw(),
+                            true,
+                            Sampling::TRILINEAR_REPEAT,
+                        )?);
+                        with_alpha.insert(key, textures.len() - 1);
+                        textures.len() - 1
+                    }
+                });
+            }
             let mut load = |p: &PathBuf, srgb: bool| -> Result<usize> {
                 if let Some(&i) = texture_index.get(&(p.clone(), srgb)) {
                     return Ok(i);
@@ -140,13 +169,20 @@ impl DrawList {
                 texture_index.insert((p.clone(), srgb), textures.len() - 1);
                 Ok(textures.len() - 1)
             };
-            let texture = m
-                .diffuse_texture
-                .as_ref()
-                .map(|p| load(p, true))
-                .transpose()?;
             // Data, not colour: a normal map is linear (GL_RGBA8), never sRGB-decoded.
+            let texture = match combined {
+                Some(i) => Some(i),
+                None => m
+                    .diffuse_texture
+                    .as_ref()
+                    .map(|p| load(p, true))
+                    .transpose()?,
+            };
             let normal_map = m.normal_map.as_ref().map(|p| load(p, false)).transpose()?;
+            // A specular map is a weight per texel: data, like a normal map.
+            let specular_map = (m.specular_map.as_ref())
+                .map(|p| load(p, false))
+                .transpose()?;
             let roughness = match o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
                 None => None,
                 Some(p) => {
@@ -167,6 +203,8 @@ impl DrawList {
                 microfacet: m.microfacet,
                 texture,
                 normal_map,
+                normal_scale: m.normal_scale,
+                specular_map,
                 light_map: light_maps[object].take().map(|t| {
                     textures.push(t);
                     textures.len() - 1
@@ -188,7 +226,12 @@ impl DrawList {
         let textured: Vec<Texturing> = scene
             .materials
             .iter()
-            .filter(|m| m.diffuse_texture.is_some() || m.normal_map.is_some())
+            .filter(|m| {
+                m.diffuse_texture.is_some()
+                    || m.normal_map.is_some()
+                    || m.specular_map.is_some()
+                    || m.alpha_map.is_some()
+            })
             .map(|m| m.texturing)
             .collect();
         let samplers = TextureSamplers::new(gl, &textured, &textures)?;
@@ -249,6 +292,7 @@ impl DrawList {
             d.microfacet = m.microfacet;
             d.alpha_test = m.alpha_test.code();
             d.alpha_ref = m.alpha_ref;
+            d.normal_scale = m.normal_scale;
             d.opacity = m.opacity;
             d.reflectivity = m.reflectivity;
             d.cull = m.cull;

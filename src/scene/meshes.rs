@@ -47,6 +47,12 @@ thread_local! {
     static LAST_OBJ: RefCell<Option<(PathBuf, Rc<ObjFile>)>> = const { RefCell::new(None) };
 }
 
+/// Forget the OBJ file `obj_file` keeps: a scene being loaded reads its
+/// files again (an edited MTL shows).
+pub fn forget_obj_files() {
+    LAST_OBJ.set(None);
+}
+
 /// The OBJ file at `path` with its materials and `usemtl` parts
 /// (`geometry::load_obj_file`), read once while it is the last one asked for.
 pub fn obj_file(path: &Path) -> Result<Rc<ObjFile>> {

@@ -32,6 +32,7 @@ pub use super::render_settings::{
 
 /// Checks every section of `f` (read from `path`) and builds the [`Scene`].
 pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
+    super::meshes::forget_obj_files();
     // The fields' objects, after the file's own.
     let generated = super::object_fields::expand(&f.object_fields)?;
     f.objects.extend(generated);

@@ -1,0 +1,39 @@
+//! The shipped model scenes on every render path: forward is the reference,
+//! the deferred paths agree within the bound the deferred tests use.
+
+use crate::common;
+use gloss::image_compare::Tolerance;
+use gloss::renderer::Output;
+use gloss::scene::RenderPath;
+
+/// tests/deferred's DEFERRED_BOUND: 8-bit rounding, and at most 0.5 % of
+/// the pixels up to 6/255 off (the G-buffer's 8-bit albedo and specular).
+const DEFERRED_BOUND: Tolerance = Tolerance {
+    threshold: 1.0 / 255.0,
+    max_frac_over: 0.005,
+    max_abs: Some(6.0 / 255.0),
+};
+
+#[test]
+fn the_model_scenes_agree_on_every_path() {
+    let ctx = common::context(common::backend());
+    for name in ["model-loading.toml", "atrium.toml"] {
+        let mut s = common::scene(name);
+        // Small, so that every path runs in the suite's time.
+        s.render.size = (320, 180);
+        s.render.path = RenderPath::Forward;
+        let forward = common::render_with(&ctx, &s, Output::Srgb8);
+        for path in RenderPath::ALL.iter().filter(|p| **p != RenderPath::Forward) {
+            let mut p = s.clone();
+            p.render.path = *path;
+            let r = common::render_with(&ctx, &p, Output::Srgb8);
+            let m = common::assert_close(
+                &format!("{name}-{path}-vs-forward"),
+                &r.image,
+                &forward.image,
+                &DEFERRED_BOUND,
+            );
+            eprintln!("{name}: {path} vs forward: {m}");
+        }
+    }
+}

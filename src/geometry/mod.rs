@@ -33,8 +33,8 @@
 
 mod gltf;
 mod gltf_write;
-mod normals;
 mod mtl;
+mod normals;
 mod obj;
 mod polygons;
 mod shapes;
@@ -44,8 +44,8 @@ mod volumes;
 
 pub use gltf::{MAX_GLTF_BYTES, MAX_GLTF_VERTICES, load_gltf};
 pub use gltf_write::write_glb;
-pub use normals::compute_normals;
 pub use mtl::{MAX_MTL_BYTES, MAX_MTL_MATERIALS, MtlMaterial, load_mtl, parse_mtl};
+pub use normals::compute_normals;
 pub use obj::{MAX_OBJ_BYTES, MAX_OBJ_VERTICES, ObjFile, ObjPart, load_obj, load_obj_file};
 pub use polygons::{newell_normal, triangulate};
 pub use shapes::{cone, cube, cylinder, fullscreen_triangle, icosphere, plane, torus, uv_sphere};

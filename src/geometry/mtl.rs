@@ -114,8 +114,9 @@ fn material(
             _ => bail!("{who}: {key}: expected a number, found \"{v}\""),
         }
     };
-    let colour = |key: &str, v: Option<[f32; 3]>, warn: &mut dyn FnMut(String)| {
-        v.map(|c| {
+    let colour =
+        |key: &str, v: Option<[f32; 3]>, warn: &mut dyn FnMut(String)| {
+            v.map(|c| {
             let ok = c.iter().all(|x| x.is_finite() && (0.0..=1.0).contains(x));
             if !ok {
                 warn(format!(
@@ -124,7 +125,7 @@ fn material(
             }
             c.map(|x| if x.is_finite() { x.clamp(0.0, 1.0) } else { 0.0 })
         })
-    };
+        };
     let mut texture = |key: &str, written: Option<&str>| -> (Option<PathBuf>, f32) {
         let Some(written) = written else {
             return (None, 1.0);
@@ -149,10 +150,7 @@ fn material(
         }
     };
     let (diffuse_map, _) = texture("map_Kd", m.diffuse_texture.as_deref().or(other("map_Kd")));
-    let (specular_map, _) = texture(
-        "map_Ks",
-        m.specular_texture.as_deref().or(other("map_Ks")),
-    );
+    let (specular_map, _) = texture("map_Ks", m.specular_texture.as_deref().or(other("map_Ks")));
     let (normal_map, normal_scale) = texture(
         "map_Bump",
         (m.normal_texture.as_deref())
@@ -247,7 +245,8 @@ pub(crate) fn texture_options(written: &str) -> (String, Option<f32>, Vec<String
                 break;
             };
             // -clamp and -imfchan take words; the others numbers.
-            let is_value = v.parse::<f32>().is_ok() || matches!(word, "-clamp" | "-imfchan" | "-type");
+            let is_value =
+                v.parse::<f32>().is_ok() || matches!(word, "-clamp" | "-imfchan" | "-type");
             if !is_value || (values.len() >= least && v.parse::<f32>().is_err()) {
                 break;
             }
@@ -257,7 +256,11 @@ pub(crate) fn texture_options(written: &str) -> (String, Option<f32>, Vec<String
         if word == "-bm" {
             bm = values.first().and_then(|v| v.parse::<f32>().ok());
         } else {
-            ignored.push(format!("{word} {}", values.join(" ")).trim_end().to_string());
+            ignored.push(
+                format!("{word} {}", values.join(" "))
+                    .trim_end()
+                    .to_string(),
+            );
         }
         rest = after;
     }
@@ -306,7 +309,10 @@ mod tests {
     #[test]
     fn options_are_split_from_the_file_name() {
         let (f, bm, ign) = texture_options("-bm 0.5 my normals.png");
-        assert_eq!((f.as_str(), bm, ign.len()), ("my normals.png", Some(0.5), 0));
+        assert_eq!(
+            (f.as_str(), bm, ign.len()),
+            ("my normals.png", Some(0.5), 0)
+        );
         let (f, bm, ign) = texture_options("-s 2 2 1 -o 0.5 -clamp on tex\\a b.jpg");
         assert_eq!((f.as_str(), bm), ("tex\\a b.jpg", None));
         assert_eq!(ign, vec!["-s 2 2 1", "-o 0.5", "-clamp on"]);
@@ -333,18 +339,33 @@ mod tests {
             Some(dir.join("Tex/Body Diffuse.PNG").as_path())
         );
         assert_eq!(m[0].normal_map, None);
-        assert!(w.iter().any(|w| w.contains("\"a\"") && w.contains("missing.png")), "{w:?}");
-        assert!(w.iter().any(|w| w.contains("Kd") && w.contains("clamped")), "{w:?}");
+        assert!(
+            w.iter()
+                .any(|w| w.contains("\"a\"") && w.contains("missing.png")),
+            "{w:?}"
+        );
+        assert!(
+            w.iter().any(|w| w.contains("Kd") && w.contains("clamped")),
+            "{w:?}"
+        );
         assert_eq!(m[1].opacity, 0.5);
-        assert_eq!(m[1].diffuse, [1.0; 3], "map_Kd alone shows the texture as it is");
+        assert_eq!(
+            m[1].diffuse, [1.0; 3],
+            "map_Kd alone shows the texture as it is"
+        );
         assert!(m[1].diffuse_map.is_some(), "map_kd in another case");
     }
 
     #[test]
     fn malformed_lines_are_named() {
         let p = Path::new("bad.mtl");
-        let e = parse_mtl(b"newmtl a\nKd 1 x 0\n", p).unwrap_err().to_string();
-        assert!(e.contains("bad.mtl") && e.contains("line 2") && e.contains("Kd 1 x 0"), "{e}");
+        let e = parse_mtl(b"newmtl a\nKd 1 x 0\n", p)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("bad.mtl") && e.contains("line 2") && e.contains("Kd 1 x 0"),
+            "{e}"
+        );
         let e = parse_mtl(&[0xff, 0xfe], p).unwrap_err().to_string();
         assert!(e.contains("not UTF-8"), "{e}");
     }

@@ -75,7 +75,8 @@ fn merge(parts: Vec<ObjPart>) -> MeshData {
             mesh.colors.extend(c);
         }
         mesh.vertices.extend(p.mesh.vertices);
-        mesh.indices.extend(p.mesh.indices.iter().map(|i| i + offset));
+        mesh.indices
+            .extend(p.mesh.indices.iter().map(|i| i + offset));
     }
     mesh
 }
@@ -251,7 +252,9 @@ fn model_mesh(model: &tobj::Model, name: &str) -> Result<MeshData> {
     finite(&m.normals, "normal")?;
     finite(&m.texcoords, "texture coordinate")?;
     if let Some(&bad) = m.indices.iter().find(|&&i| i as usize >= n) {
-        bail!("OBJ file {name}: object '{object}' has face index {bad} out of range ({n} vertices)");
+        bail!(
+            "OBJ file {name}: object '{object}' has face index {bad} out of range ({n} vertices)"
+        );
     }
     let indices = triangles(m, name, object)?;
     finite(&m.vertex_color, "vertex colour")?;
@@ -342,7 +345,9 @@ fn unknown_materials(bytes: &[u8], materials: &[MtlMaterial], name: &str, w: &mu
             continue;
         }
         if seen.len() == 16 {
-            w.push(format!("OBJ file {name}: more usemtl names no MTL file defines"));
+            w.push(format!(
+                "OBJ file {name}: more usemtl names no MTL file defines"
+            ));
             break;
         }
         seen.push(m.to_string());

@@ -84,7 +84,14 @@ mod tests {
     /// A C shape, 3 x 3 with a 1 x 1 notch cut from the middle of its right side.
     fn c_shape() -> Vec<Vec3> {
         [
-            (0., 0.), (3., 0.), (3., 1.), (1., 1.), (1., 2.), (3., 2.), (3., 3.), (0., 3.),
+            (0., 0.),
+            (3., 0.),
+            (3., 1.),
+            (1., 1.),
+            (1., 2.),
+            (3., 2.),
+            (3., 3.),
+            (0., 3.),
         ]
         .map(|(x, y)| Vec3::new(x, y, 0.0))
         .to_vec()
@@ -97,7 +104,10 @@ mod tests {
         assert_eq!(t.len(), 3 * 6);
         // 9 - the notch (2 x 1) = 7.
         assert!((area(&p, &t) - 7.0).abs() < 1e-5, "{}", area(&p, &t));
-        assert!(!inside(&p, &t, Vec3::new(2.0, 1.5, 0.0)), "the notch is filled");
+        assert!(
+            !inside(&p, &t, Vec3::new(2.0, 1.5, 0.0)),
+            "the notch is filled"
+        );
         assert!(inside(&p, &t, Vec3::new(0.5, 1.5, 0.0)));
         for tri in t.chunks_exact(3) {
             let [a, b, c] = [tri[0], tri[1], tri[2]].map(|i| p[i as usize]);
@@ -110,14 +120,26 @@ mod tests {
         // Outer square 0..4, inner square 1..3, joined by a slit along y = 0..1 at x = 0..1
         // (how an OBJ writes a ring as one face).
         let p: Vec<Vec3> = [
-            (1., 1.), (1., 0.), (4., 0.), (4., 4.), (0., 4.), (0., 0.), (1., 0.), (1., 1.),
-            (1., 3.), (3., 3.), (3., 1.),
+            (1., 1.),
+            (1., 0.),
+            (4., 0.),
+            (4., 4.),
+            (0., 4.),
+            (0., 0.),
+            (1., 0.),
+            (1., 1.),
+            (1., 3.),
+            (3., 3.),
+            (3., 1.),
         ]
         .map(|(x, y)| Vec3::new(x, y, 0.0))
         .to_vec();
         let t = triangulate(&p);
         assert!((area(&p, &t) - 12.0).abs() < 1e-4, "{}", area(&p, &t));
-        assert!(!inside(&p, &t, Vec3::new(2.0, 2.0, 0.0)), "the hole is filled");
+        assert!(
+            !inside(&p, &t, Vec3::new(2.0, 2.0, 0.0)),
+            "the hole is filled"
+        );
         assert!(inside(&p, &t, Vec3::new(3.5, 2.0, 0.0)));
     }
 

@@ -301,16 +301,9 @@ fn objects(
             ));
             continue;
         }
-        let w = super::obj_materials::expand(
-            o,
-            i,
-            &path,
-            materials,
-            &mut first,
-            &mut extra,
-            &taken,
-        )
-        .map_err(|e| anyhow!("{}: {e:#}", format_args!("objects[{i}].mesh")))?;
+        let w =
+            super::obj_materials::expand(o, i, &path, materials, &mut first, &mut extra, &taken)
+                .map_err(|e| anyhow!("{}: {e:#}", format_args!("objects[{i}].mesh")))?;
         for w in w {
             if !warnings.contains(&w) {
                 warnings.push(w);

@@ -32,8 +32,18 @@ fn line() -> impl Strategy<Value = String> {
         "map_bump", "bump", "norm", "map_d", "map_Ka", "map_Ns", "MAP_KD", "refl", "newmtl",
     ]);
     let texture = proptest::sample::select(vec![
-        "a.png", "-bm", "-bm 2 n.png", "-bm nan n.png", "-s 1 2 3 x.png", "-o", "-clamp on",
-        "..\\\\..\\\\x.png", "dir/with space.jpg", "/dev/zero", "\"q.png\"", "",
+        "a.png",
+        "-bm",
+        "-bm 2 n.png",
+        "-bm nan n.png",
+        "-s 1 2 3 x.png",
+        "-o",
+        "-clamp on",
+        "..\\\\..\\\\x.png",
+        "dir/with space.jpg",
+        "/dev/zero",
+        "\"q.png\"",
+        "",
     ]);
     prop_oneof![
         10 => (key.clone(), proptest::collection::vec(number(), 0..5))

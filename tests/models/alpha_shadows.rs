@@ -122,8 +122,16 @@ fn an_alpha_cutoff_splits_the_quad_and_its_shadow_at_the_predicted_column() {
     ];
     for (name, light) in &cases {
         let s = scene(&dir, light);
-        let leaf = s.materials.iter().find(|m| m.name == "leaf.obj/leaf").unwrap();
-        assert_eq!(leaf.alpha_test, gloss::scene::AlphaTest::Gequal, "an alpha channel is a cut-out");
+        let leaf = s
+            .materials
+            .iter()
+            .find(|m| m.name == "leaf.obj/leaf")
+            .unwrap();
+        assert_eq!(
+            leaf.alpha_test,
+            gloss::scene::AlphaTest::Gequal,
+            "an alpha channel is a cut-out"
+        );
         for path in RenderPath::ALL {
             let mut s = s.clone();
             s.render.path = *path;
@@ -133,10 +141,15 @@ fn an_alpha_cutoff_splits_the_quad_and_its_shadow_at_the_predicted_column() {
             for c in 0..96 {
                 let x = (c as f32 + 0.5) / 16.0 - 3.0;
                 // 1.5 pixels either side of an edge may go either way.
-                let near_edge = [-1.0f32, 0.0, 1.0].iter().any(|e| (x - e).abs() < 1.5 / 16.0);
+                let near_edge = [-1.0f32, 0.0, 1.0]
+                    .iter()
+                    .any(|e| (x - e).abs() < 1.5 / 16.0);
                 let got = seen(linear_at(&r, c, 44));
                 if !near_edge && got != predicted(x) {
-                    wrong.push(format!("column {c} (x = {x:.2}): {got:?}, expected {:?}", predicted(x)));
+                    wrong.push(format!(
+                        "column {c} (x = {x:.2}): {got:?}, expected {:?}",
+                        predicted(x)
+                    ));
                 }
             }
             assert!(wrong.is_empty(), "{name}, {path}:\n{}", wrong.join("\n"));

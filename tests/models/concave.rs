@@ -62,12 +62,23 @@ mesh = "faces.obj"
     let r = common::render(&s, Output::Srgb8);
     // (x, y) in world units -> the pixel, y counted from the top.
     let at = |x: f32, y: f32| {
-        let p = r.image.get_pixel((x * 10.0 + 5.0) as u32, ((4.5 - y) * 10.0) as u32);
+        let p = r
+            .image
+            .get_pixel((x * 10.0 + 5.0) as u32, ((4.5 - y) * 10.0) as u32);
         p.0[2] > 200 && p.0[0] < 50 // the blue background
     };
     assert!(at(2.0, 2.0), "the ring's hole is filled");
-    assert!(at(1.5, 1.5) && at(2.5, 2.5), "the ring's hole is partly filled");
-    assert!(!at(0.5, 2.0) && !at(3.5, 2.0) && !at(2.0, 0.5) && !at(2.0, 3.5), "the ring is missing");
+    assert!(
+        at(1.5, 1.5) && at(2.5, 2.5),
+        "the ring's hole is partly filled"
+    );
+    assert!(
+        !at(0.5, 2.0) && !at(3.5, 2.0) && !at(2.0, 0.5) && !at(2.0, 3.5),
+        "the ring is missing"
+    );
     assert!(at(7.0, 1.5), "the C's notch is filled");
-    assert!(!at(5.5, 1.5) && !at(7.0, 0.5) && !at(7.0, 2.5), "the C is missing");
+    assert!(
+        !at(5.5, 1.5) && !at(7.0, 0.5) && !at(7.0, 2.5),
+        "the C is missing"
+    );
 }

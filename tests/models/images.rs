@@ -7,14 +7,22 @@ use gloss::gl::image_file::{MAX_TEXTURE_SIDE, load_rgba8};
 
 /// A smooth, opaque 32 x 16 gradient (JPEG keeps smooth images close).
 fn gradient() -> image::RgbImage {
-    image::RgbImage::from_fn(32, 16, |x, y| image::Rgb([(x * 8) as u8, (y * 16) as u8, 128]))
+    image::RgbImage::from_fn(32, 16, |x, y| {
+        image::Rgb([(x * 8) as u8, (y * 16) as u8, 128])
+    })
 }
 
 #[test]
 fn jpeg_tga_and_bmp_decode_to_the_texels_written() {
     let dir = temp_dir("images");
     let src = gradient();
-    for (name, tolerance) in [("g.jpg", 12i32), ("g.jpeg", 12), ("g.tga", 0), ("g.bmp", 0), ("g.png", 0)] {
+    for (name, tolerance) in [
+        ("g.jpg", 12i32),
+        ("g.jpeg", 12),
+        ("g.tga", 0),
+        ("g.bmp", 0),
+        ("g.png", 0),
+    ] {
         let path = dir.join(name);
         match name {
             // Quality 95: what a model's textures are usually saved at.
@@ -36,7 +44,10 @@ fn jpeg_tga_and_bmp_decode_to_the_texels_written() {
             }
             assert_eq!(q.0[3], 255, "{name}: opaque");
         }
-        assert!(worst <= tolerance, "{name}: a texel is {worst} off (at most {tolerance})");
+        assert!(
+            worst <= tolerance,
+            "{name}: a texel is {worst} off (at most {tolerance})"
+        );
     }
 }
 

@@ -106,13 +106,24 @@ fn an_mtl_colour_and_a_map_kd_texel_land_on_the_predicted_pixels() {
         let r = common::render_with(&ctx, &s, Output::Linear32F);
         // Ambient 1, no light: each pixel is its c_d (x the texel).
         let red = linear_at(&r, 16, 32);
-        assert!(close(red, [0.8, 0.2, 0.1], 0.01), "{path}: Kd pixel {red:?}");
+        assert!(
+            close(red, [0.8, 0.2, 0.1], 0.01),
+            "{path}: Kd pixel {red:?}"
+        );
         // Column 40: x = 0.27, u = 0.27 (texels 0 and 1, both A).
         let a = linear_at(&r, 40, 32);
-        assert!(close(a, decode(A), 0.01), "{path}: texel A {a:?} vs {:?}", decode(A));
+        assert!(
+            close(a, decode(A), 0.01),
+            "{path}: texel A {a:?} vs {:?}",
+            decode(A)
+        );
         // Column 56: x = 0.77, u = 0.77 (texels 2 and 3, both B).
         let b = linear_at(&r, 56, 32);
-        assert!(close(b, decode(B), 0.01), "{path}: texel B {b:?} vs {:?}", decode(B));
+        assert!(
+            close(b, decode(B), 0.01),
+            "{path}: texel B {b:?} vs {:?}",
+            decode(B)
+        );
     }
     // The scene's material overrides the file's: one mesh, one colour.
     let grey = scene(&dir, "material = \"grey\"", "", 1.0);
@@ -149,11 +160,21 @@ fn a_specular_map_darkens_the_highlight_where_it_is_black() {
         let m = common::render_with(&ctx, &m, Output::Linear32F);
         // Where the map is black (u < 0.5, column 40) the highlight is gone;
         // where it is white (column 56) it is the map-less highlight.
-        let (lit, dark, white) = (linear_at(&p, 40, 32), linear_at(&m, 40, 32), linear_at(&m, 56, 32));
+        let (lit, dark, white) = (
+            linear_at(&p, 40, 32),
+            linear_at(&m, 40, 32),
+            linear_at(&m, 56, 32),
+        );
         assert!(lit[0] > 0.3, "{path}: no highlight to darken: {lit:?}");
-        assert!(dark.iter().all(|x| *x < 0.01), "{path}: black map, highlight {dark:?}");
+        assert!(
+            dark.iter().all(|x| *x < 0.01),
+            "{path}: black map, highlight {dark:?}"
+        );
         let expected = linear_at(&p, 56, 32);
-        assert!(close(white, expected, 0.01), "{path}: white map {white:?} vs {expected:?}");
+        assert!(
+            close(white, expected, 0.01),
+            "{path}: white map {white:?} vs {expected:?}"
+        );
     }
 }
 
@@ -177,7 +198,11 @@ fn a_missing_texture_is_a_warning_naming_the_material_and_the_path() {
     assert!(close(linear_at(&r, 16, 32), [0.8, 0.2, 0.1], 0.01));
     assert!(close(linear_at(&r, 48, 32), [0.1, 0.7, 0.2], 0.01));
     // An MTL that is not there: one warning, default material.
-    write(&dir, "quads.obj", &TWO_QUADS.replace("quads.mtl", "nowhere.mtl"));
+    write(
+        &dir,
+        "quads.obj",
+        &TWO_QUADS.replace("quads.mtl", "nowhere.mtl"),
+    );
     let s = scene(&dir, "", "", 1.0);
     let w = s.warnings().join("\n");
     assert!(w.contains("nowhere.mtl") && w.contains("not found"), "{w}");

@@ -85,7 +85,15 @@ fn first_bad_line(text: &str, e: tobj::LoadError) -> String {
         let one = format!("newmtl probe\n{line}\n");
         if tobj::load_mtl_buf(&mut one.as_bytes()).is_err() {
             let shown: String = line.chars().take(80).collect();
-            return format!("line {}: \"{shown}\": {e}", i + 1);
+            let key = line.split_whitespace().next().unwrap_or("");
+            let expected = match key {
+                "Ka" | "Kd" | "Ks" | "Ke" => "expected three numbers (r g b)",
+                "Ns" | "Ni" | "d" => "expected a number",
+                "illum" => "expected an illumination model, 0 to 10",
+                "newmtl" => "expected a material name",
+                _ => "expected a file name after the key",
+            };
+            return format!("line {}: \"{shown}\": {expected} ({e})", i + 1);
         }
     }
     e.to_string()
@@ -286,6 +294,10 @@ pub(crate) fn find_file(base: &Path, written: &str) -> Option<PathBuf> {
     } else {
         base.to_path_buf()
     };
+    if at.as_os_str().is_empty() {
+        // A file named relative to the working directory.
+        at = PathBuf::from(".");
+    }
     for part in written.split('/').filter(|p| !p.is_empty() && *p != ".") {
         let next = at.join(part);
         if part == ".." || next.exists() {

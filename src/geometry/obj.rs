@@ -238,7 +238,7 @@ fn load_obj_limited(
 fn model_mesh(model: &tobj::Model, name: &str) -> Result<MeshData> {
     let m = &model.mesh;
     let object = &model.name;
-    if m.positions.len() % 3 != 0 {
+    if !m.positions.len().is_multiple_of(3) {
         bail!("malformed OBJ file {name}: object '{object}' has a partial position");
     }
     let n = m.positions.len() / 3;
@@ -309,7 +309,7 @@ fn model_mesh(model: &tobj::Model, name: &str) -> Result<MeshData> {
 /// `face_arities`; none when every face is a triangle) ear-clipped.
 fn triangles(m: &tobj::Mesh, name: &str, object: &str) -> Result<Vec<u32>> {
     if m.face_arities.is_empty() {
-        if m.indices.len() % 3 != 0 {
+        if !m.indices.len().is_multiple_of(3) {
             bail!("malformed OBJ file {name}: object '{object}' has a partial triangle");
         }
         return Ok(m.indices.clone());

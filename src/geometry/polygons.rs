@@ -36,7 +36,8 @@ pub fn triangulate(p: &[Vec3]) -> Vec<u32> {
     }
     let normal = newell_normal(p);
     let fan = || (1..n as u32 - 1).flat_map(|i| [0, i, i + 1]).collect();
-    if !(normal.length_squared() > 0.0) {
+    let area2 = normal.length_squared();
+    if area2.is_nan() || area2 <= 0.0 {
         return fan();
     }
     let points: Vec<[f64; 3]> = p.iter().map(|v| v.as_dvec3().to_array()).collect();

@@ -51,6 +51,7 @@ use std::path::{Path, PathBuf};
 mod arm;
 mod atlas;
 mod bunny;
+mod model_textures;
 mod models;
 mod skybox;
 

@@ -7,6 +7,7 @@
 
 use crate::frame::billboards::BillboardDraws;
 use crate::frame::culling::{CullStats, CullTree};
+use crate::frame::draw_textures::with_alpha_map;
 use crate::frame::skins::SkinDraw;
 use crate::frame::texturing::TextureSamplers;
 use crate::geometry::MeshData;
@@ -137,30 +138,9 @@ impl DrawList {
                 }
             };
             let m = &scene.materials[o.material];
-            // An alpha map becomes the diffuse texture's alpha (one texture).
-            let mut combined = None;
-            if let Some(a) = &m.alpha_map {
-                let key = (m.diffuse_texture.clone(), a.clone());
-                combined = Some(match with_alpha.get(&key) {
-                    Some(&i) => i,
-                    None => {
-                        let img = crate::gl::image_file::load_rgba8_with_alpha(
-                            m.diffuse_texture.as_deref(),
-                            a,
-                        )?;
-                        textures.push(Texture::from_rgba8(
-                            gl,
-                            img.width(),
-                            img.height(),
-                            img.as_raw(),
-                            true,
-                            Sampling::TRILINEAR_REPEAT,
-                        )?);
-                        with_alpha.insert(key, textures.len() - 1);
-                        textures.len() - 1
-                    }
-                });
-            }
+            let combined = (m.alpha_map.as_ref())
+                .map(|a| with_alpha_map(gl, &mut textures, &mut with_alpha, m, a))
+                .transpose()?; // an MTL's map_d: one texture, the diffuse with that alpha
             let mut load = |p: &PathBuf, srgb: bool| -> Result<usize> {
                 if let Some(&i) = texture_index.get(&(p.clone(), srgb)) {
                     return Ok(i);
@@ -169,20 +149,13 @@ impl DrawList {
                 texture_index.insert((p.clone(), srgb), textures.len() - 1);
                 Ok(textures.len() - 1)
             };
-            // Data, not colour: a normal map is linear (GL_RGBA8), never sRGB-decoded.
-            let texture = match combined {
-                Some(i) => Some(i),
-                None => m
-                    .diffuse_texture
-                    .as_ref()
-                    .map(|p| load(p, true))
-                    .transpose()?,
-            };
-            let normal_map = m.normal_map.as_ref().map(|p| load(p, false)).transpose()?;
-            // A specular map is a weight per texel: data, like a normal map.
-            let specular_map = (m.specular_map.as_ref())
-                .map(|p| load(p, false))
+            let texture = (combined.map(Ok))
+                .or_else(|| m.diffuse_texture.as_ref().map(|p| load(p, true)))
                 .transpose()?;
+            // Data, not colour: normal and specular maps are linear (GL_RGBA8).
+            let [normal_map, specular_map] =
+                [&m.normal_map, &m.specular_map].map(|p| p.as_ref().map(|p| load(p, false)));
+            let (normal_map, specular_map) = (normal_map.transpose()?, specular_map.transpose()?);
             let roughness = match o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
                 None => None,
                 Some(p) => {
@@ -226,12 +199,7 @@ impl DrawList {
         let textured: Vec<Texturing> = scene
             .materials
             .iter()
-            .filter(|m| {
-                m.diffuse_texture.is_some()
-                    || m.normal_map.is_some()
-                    || m.specular_map.is_some()
-                    || m.alpha_map.is_some()
-            })
+            .filter(|m| m.is_textured())
             .map(|m| m.texturing)
             .collect();
         let samplers = TextureSamplers::new(gl, &textured, &textures)?;

@@ -10,10 +10,13 @@ use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture};
 use crate::lighting::shadow_reference::SceneTriangles;
 use crate::lighting::static_lighting;
+use crate::scene::material::Material;
 use crate::scene::meshes::mesh_data;
 use crate::scene::{RenderSettings, Scene};
 use anyhow::{Context as _, Result};
 use glow::HasContext;
+use std::collections::HashMap;
+use std::path::PathBuf;
 
 /// Each object's light map (notes 01 §8.2), baked on the CPU
 /// (src/lighting/static_lighting.rs) and uploaded as GL_RGBA16F; None for
@@ -49,6 +52,28 @@ pub fn bake_light_maps(gl: &Gl, scene: &Scene) -> Result<Vec<Option<Texture>>> {
         maps.push(Some(t));
     }
     Ok(maps)
+}
+
+/// Material `m`'s diffuse texture with its alpha map's first channel as
+/// the alpha (an MTL's map_d; white where it has no diffuse texture),
+/// uploaded once per pair (`made`); its index in `textures`.
+pub fn with_alpha_map(
+    gl: &Gl,
+    textures: &mut Vec<Texture>,
+    made: &mut HashMap<(Option<PathBuf>, PathBuf), usize>,
+    m: &Material,
+    alpha: &PathBuf,
+) -> Result<usize> {
+    let key = (m.diffuse_texture.clone(), alpha.clone());
+    if let Some(&i) = made.get(&key) {
+        return Ok(i);
+    }
+    let img = crate::gl::image_file::load_rgba8_with_alpha(m.diffuse_texture.as_deref(), alpha)?;
+    let (w, h) = img.dimensions();
+    let t = Texture::from_rgba8(gl, w, h, img.as_raw(), true, Sampling::TRILINEAR_REPEAT)?;
+    textures.push(t);
+    made.insert(key, textures.len() - 1);
+    Ok(textures.len() - 1)
 }
 
 impl DrawList {

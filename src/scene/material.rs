@@ -195,4 +195,12 @@ impl Material {
     pub fn is_transparent(&self) -> bool {
         self.opacity < 1.0
     }
+
+    /// Samples a texture: a diffuse texture or any map.
+    pub fn is_textured(&self) -> bool {
+        self.diffuse_texture.is_some()
+            || self.normal_map.is_some()
+            || self.specular_map.is_some()
+            || self.alpha_map.is_some()
+    }
 }

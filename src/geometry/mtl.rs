@@ -54,6 +54,21 @@ pub fn load_mtl(path: &Path) -> Result<(Vec<MtlMaterial>, Vec<String>)> {
 /// `load_mtl` on bytes already read; `path` names the file in messages and
 /// anchors the texture paths.
 pub fn parse_mtl(bytes: &[u8], path: &Path) -> Result<(Vec<MtlMaterial>, Vec<String>)> {
+    let (ours, warnings, _) = parse_both(bytes, path)?;
+    Ok((ours, warnings))
+}
+
+/// What tobj's OBJ reader wants back from an `mtllib` (always `Ok` here:
+/// an error is reported as gloss's own).
+pub(crate) type TobjMaterials = tobj::MTLLoadResult;
+
+/// `load_mtl`, with tobj's own materials (for its `usemtl` lookup).
+pub(crate) fn load_both(path: &Path) -> Result<(Vec<MtlMaterial>, Vec<String>, TobjMaterials)> {
+    let bytes = assets::read(path, MAX_MTL_BYTES, "MTL file")?;
+    parse_both(&bytes, path)
+}
+
+fn parse_both(bytes: &[u8], path: &Path) -> Result<(Vec<MtlMaterial>, Vec<String>, TobjMaterials)> {
     let name = path.display();
     let Ok(text) = std::str::from_utf8(bytes) else {
         bail!("MTL file {name} is not UTF-8 text");
@@ -65,17 +80,51 @@ pub fn parse_mtl(bytes: &[u8], path: &Path) -> Result<(Vec<MtlMaterial>, Vec<Str
     if defined > MAX_MTL_MATERIALS {
         bail!("MTL file {name} defines {defined} materials, the limit is {MAX_MTL_MATERIALS}");
     }
-    let parsed = match tobj::load_mtl_buf(&mut text.as_bytes()) {
+    let text = colours_for_tobj(text, &name.to_string())?;
+    let parsed = tobj::load_mtl_buf(&mut text.as_bytes());
+    let materials = match &parsed {
         Ok((m, _)) => m,
-        Err(e) => bail!("malformed MTL file {name}: {}", first_bad_line(text, e)),
+        Err(e) => bail!("malformed MTL file {name}: {}", first_bad_line(&text, *e)),
     };
     let base = path.parent().unwrap_or(Path::new("."));
     let mut warnings = Vec::new();
     let mut out = Vec::new();
-    for m in parsed {
-        out.push(material(&m, base, path, &mut warnings)?);
+    for m in materials {
+        out.push(material(m, base, path, &mut warnings)?);
     }
-    Ok((out, warnings))
+    Ok((out, warnings, parsed))
+}
+
+/// The MTL text as tobj can take it: tobj panics on a colour statement
+/// (Ka, Kd, Ks, Ke) of fewer than three numbers (found by
+/// tests/fuzz/mtl.rs). One number is the MTL specification's grey
+/// (`Kd r` is r r r); none or two are an error naming the line.
+fn colours_for_tobj(text: &str, name: &str) -> Result<String> {
+    let mut out = String::with_capacity(text.len() + 64);
+    for (i, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        if let Some(key @ ("Ka" | "Kd" | "Ks" | "Ke")) = words.next() {
+            let values: Vec<&str> = words.collect();
+            match values.len() {
+                1 => {
+                    let r = values[0];
+                    out.push_str(&format!("{key} {r} {r} {r}\n"));
+                    continue;
+                }
+                0 | 2 => {
+                    let shown: String = line.chars().take(80).collect();
+                    bail!(
+                        "malformed MTL file {name}: line {}: \"{shown}\": expected three numbers (r g b)",
+                        i + 1
+                    );
+                }
+                _ => {}
+            }
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    Ok(out)
 }
 
 /// tobj says what kind of error, not where: find the first line that fails
@@ -380,5 +429,15 @@ mod tests {
         );
         let e = parse_mtl(&[0xff, 0xfe], p).unwrap_err().to_string();
         assert!(e.contains("not UTF-8"), "{e}");
+        // tobj panics on these (a colour of fewer than three numbers).
+        for bad in ["Kd", "Kd 0.5 0.5", "Ks  1\t2 "] {
+            let e = parse_mtl(format!("newmtl a\n{bad}\n").as_bytes(), p)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("line 2") && e.contains("three numbers"), "{e}");
+        }
+        // One number is grey (the MTL specification).
+        let (m, _) = parse_mtl(b"newmtl a\nKd 0.25\n", p).unwrap();
+        assert_eq!(m[0].diffuse, [0.25; 3]);
     }
 }

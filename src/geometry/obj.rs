@@ -151,13 +151,7 @@ fn load_obj_limited(
             ));
             return Ok((Vec::new(), Default::default()));
         };
-        let read = super::mtl::load_mtl(&mtl).and_then(|(ours, w)| {
-            let bytes = assets::read(&mtl, super::mtl::MAX_MTL_BYTES, "MTL file")?;
-            let theirs = tobj::load_mtl_buf(&mut bytes.as_ref())
-                .map_err(|e| anyhow!("malformed MTL file {}: {e}", mtl.display()))?;
-            Ok((ours, w, theirs))
-        });
-        match read {
+        match super::mtl::load_both(&mtl) {
             Ok((ours, w, theirs)) => {
                 let total = materials.borrow().len() + ours.len();
                 if total > super::mtl::MAX_MTL_MATERIALS {
@@ -169,7 +163,7 @@ fn load_obj_limited(
                 }
                 materials.borrow_mut().extend(ours);
                 warnings.borrow_mut().extend(w);
-                Ok(theirs)
+                theirs
             }
             Err(e) => {
                 failed.borrow_mut().get_or_insert(e);

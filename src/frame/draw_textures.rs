@@ -16,7 +16,7 @@ use crate::scene::{RenderSettings, Scene};
 use anyhow::{Context as _, Result};
 use glow::HasContext;
 use std::collections::HashMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Each object's light map (notes 01 §8.2), baked on the CPU
 /// (src/lighting/static_lighting.rs) and uploaded as GL_RGBA16F; None for
@@ -62,9 +62,9 @@ pub fn with_alpha_map(
     textures: &mut Vec<Texture>,
     made: &mut HashMap<(Option<PathBuf>, PathBuf), usize>,
     m: &Material,
-    alpha: &PathBuf,
+    alpha: &Path,
 ) -> Result<usize> {
-    let key = (m.diffuse_texture.clone(), alpha.clone());
+    let key = (m.diffuse_texture.clone(), alpha.to_path_buf());
     if let Some(&i) = made.get(&key) {
         return Ok(i);
     }

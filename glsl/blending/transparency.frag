@@ -8,6 +8,7 @@
 #include "common/normals.glsl"
 #include "common/material.glsl"
 #include "common/lighting_output.glsl"
+#include "common/alpha_test.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -23,12 +24,14 @@ out vec4 frag_color;
 
 void main() {
     vec2 uv = surface_uv();
+    // A cut-out that is also see-through (an MTL's map_d with d < 1).
+    alpha_test(material_alpha(uv));
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     // A back face (the far wall of a glass sphere) faces the eye from inside.
     if (!gl_FrontFacing) N = -N;
     vec3 V = normalize(u_eye - v_position);
     vec3 kd = material_diffuse(uv) * surface_color();
-    vec3 ks = material_specular();
+    vec3 ks = material_specular() * material_specular_map(uv);
     Reflectance r = material_reflectance();
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {

@@ -6,6 +6,7 @@ in vec4 v_tangent;
 uniform bool u_has_normal_map;
 uniform sampler2D u_normal_map;   // unit::NORMAL_MAP
 uniform vec4 u_uv_transform;      // the material's uv scale.xy, offset.zw
+uniform float u_normal_scale;     // the map's strength: its x and y are scaled (1: as stored)
 
 vec3 bumped_normal(vec3 N, vec2 uv) {
     if (!u_has_normal_map) return N;
@@ -20,6 +21,7 @@ vec3 bumped_normal(vec3 N, vec2 uv) {
     B *= u_uv_transform.y < 0.0 ? -1.0 : 1.0;
     mat3 TBN = mat3(T, B, N);   // columns: [Tx Bx Nx; Ty By Ny; Tz Bz Nz]
     vec3 n = texture(u_normal_map, uv).xyz * 2.0 - 1.0;
+    n.xy *= u_normal_scale;
     vec3 w = TBN * n;
     float wl = length(w);
     return wl > 1e-12 ? w / wl : N;

@@ -11,6 +11,8 @@ uniform float u_microfacet_eta;
 uniform float u_microfacet_k_s;
 uniform bool u_has_diffuse_texture;
 uniform sampler2D u_diffuse_texture;   // sRGB texture: sampling returns linear
+uniform bool u_has_specular_map;
+uniform sampler2D u_specular_map;      // unit::SPECULAR_MAP, linear data
 
 vec3 material_diffuse(vec2 uv) {
     return u_has_diffuse_texture ? u_diffuse * texture(u_diffuse_texture, uv).rgb : u_diffuse;
@@ -25,6 +27,14 @@ float material_alpha(vec2 uv) {
 // the microfacet k_s (a dielectric's highlight is white).
 vec3 material_specular() {
     return u_microfacet ? vec3(u_microfacet_k_s) : u_specular;
+}
+
+// The specular map's weight at uv (an MTL's map_Ks, LearnOpenGL's
+// "lighting maps"): it multiplies a Phong material's specular colour; 1
+// without a map, and for a microfacet material (whose k_s the G-buffer
+// stores apart).
+vec3 material_specular_map(vec2 uv) {
+    return u_has_specular_map && !u_microfacet ? texture(u_specular_map, uv).rgb : vec3(1.0);
 }
 
 Reflectance material_reflectance() {

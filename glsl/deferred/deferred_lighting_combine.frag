@@ -37,5 +37,5 @@ void main() {
     }
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 mirrored = environment_reflection(u_reflectivity, N, normalize(u_eye - v_position));
-    frag_color = output_color(material_diffuse(uv) * surface_color() * (ambient + D) + material_specular() * S + mirrored);
+    frag_color = output_color(material_diffuse(uv) * surface_color() * (ambient + D) + material_specular() * material_specular_map(uv) * S + mirrored);
 }

@@ -35,7 +35,7 @@ void main() {
     // The normal after the normal map (notes 01 §8.4) is what the lights read.
     g_normal_shininess = vec4(bumped_normal(safe_normal(v_normal, v_position), uv), u_shininess);
     g_albedo = vec4(material_diffuse(uv) * surface_color(), 1.0);
-    g_specular = vec4(u_specular, u_reflectivity);
+    g_specular = vec4(u_specular * material_specular_map(uv), u_reflectivity);
     vec3 triple = vec3(u_microfacet_alpha, u_microfacet_eta, u_microfacet_k_s);
     encode_material(triple, u_microfacet, g_alpha, g_convert);
 }

@@ -27,7 +27,7 @@ void main() {
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 V = normalize(u_eye - v_position);
     vec3 kd = material_diffuse(uv) * surface_color();
-    vec3 ks = material_specular();
+    vec3 ks = material_specular() * material_specular_map(uv);
     Reflectance r = material_reflectance();
     // Static lighting (notes 01 §8.2): the diffuse light baked when the
     // scene loaded, read over the mesh's own uvs; no light loop.

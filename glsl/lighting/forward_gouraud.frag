@@ -13,6 +13,6 @@ void main() {
     vec2 uv = surface_uv();
     alpha_test(material_alpha(uv));
     vec3 kd = material_diffuse(uv) * surface_color();
-    vec3 c = kd * (u_ambient + v_diffuse_light) + material_specular() * v_specular_light;
+    vec3 c = kd * (u_ambient + v_diffuse_light) + material_specular() * material_specular_map(uv) * v_specular_light;
     frag_color = output_color(c);
 }

@@ -5,12 +5,17 @@
 // gl_FragDepth bypasses glPolygonOffset, so the slope-scaled bias is added
 // here, as glPolygonOffset would: slope_bias x the depth's largest slope
 // across a pixel.
+#include "shadows/shadow_alpha.glsl"
 #ifdef LAYERED
 in vec3 g_world;
+in vec2 g_uv;
 #define WORLD g_world
+#define UV g_uv
 #else
 in vec3 v_world;
+in vec2 v_uv;
 #define WORLD v_world
+#define UV v_uv
 #endif
 
 uniform vec3 u_light_position;
@@ -18,6 +23,8 @@ uniform float u_far;
 uniform float u_slope_bias;
 
 void main() {
+    // A leaf casts a leaf: the caster's alpha test first.
+    shadow_alpha_test(UV);
     float d = length(WORLD - u_light_position) / u_far;
     float slope = max(abs(dFdx(d)), abs(dFdy(d)));
     gl_FragDepth = d + u_slope_bias * slope;

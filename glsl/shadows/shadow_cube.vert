@@ -4,13 +4,17 @@
 // passes: u_light_view_projection is one face's. One pass: the geometry
 // shader (shadow_cube.geom) projects to every face itself.
 layout(location = 0) in vec3 a_position;
+layout(location = 2) in vec2 a_uv;
 
 uniform mat4 u_model;
 uniform mat4 u_light_view_projection;
+uniform vec4 u_uv_transform;   // the material's uv scale.xy, offset.zw
 
 out vec3 v_world;
+out vec2 v_uv;   // for an alpha-tested caster (shadows/shadow_alpha.glsl)
 
 void main() {
+    v_uv = a_uv * u_uv_transform.xy + u_uv_transform.zw;
     vec4 world = u_model * vec4(a_position, 1.0);
     v_world = world.xyz;
     gl_Position = u_light_view_projection * world;

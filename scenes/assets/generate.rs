@@ -37,6 +37,9 @@
 //! * `arm.glb`: a skinned arm, three joints and two clips, as binary glTF
 //!   2.0 (`arm.rs` says how it is built).
 //!
+//! * `models/`: the model-loading scenes' OBJ + MTL files and textures,
+//!   JPEGs among them (`models.rs` says what each holds).
+//!
 //! Run with `cargo run --release --example gen_assets`. Output is deterministic.
 
 use anyhow::{Context, Result};
@@ -48,6 +51,8 @@ use std::path::{Path, PathBuf};
 mod arm;
 mod atlas;
 mod bunny;
+mod model_textures;
+mod models;
 mod skybox;
 
 fn main() -> Result<()> {
@@ -119,6 +124,7 @@ fn main() -> Result<()> {
     std::fs::write(&glb, geometry::write_glb(&arm::arm()))
         .with_context(|| format!("writing {}", glb.display()))?;
     println!("wrote {}", glb.display());
+    models::write_all(&dir)?;
     Ok(())
 }
 

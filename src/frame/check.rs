@@ -38,7 +38,13 @@ pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
             mesh_data(&o.mesh)?;
         }
         let m = &scene.materials[o.material];
-        for p in [&m.diffuse_texture, &m.normal_map].into_iter().flatten() {
+        let maps = [
+            &m.diffuse_texture,
+            &m.normal_map,
+            &m.specular_map,
+            &m.alpha_map,
+        ];
+        for p in maps.into_iter().flatten() {
             if textures.insert(p) {
                 load_rgba8(p)?;
             }

@@ -7,6 +7,7 @@
 
 use crate::frame::billboards::BillboardDraws;
 use crate::frame::culling::{CullStats, CullTree, mesh_bounds};
+use crate::frame::draw_textures::with_alpha_map;
 use crate::frame::skins::SkinDraw;
 use crate::frame::texturing::TextureSamplers;
 use crate::gl::Gl;
@@ -43,6 +44,10 @@ pub struct DrawItem {
     pub texture: Option<usize>,
     /// The material's normal map (notes 01 §8.4), if it has one.
     pub normal_map: Option<usize>,
+    /// The normal map's x and y are multiplied by it (`Material::normal_scale`).
+    pub normal_scale: f32,
+    /// The material's specular map, if it has one (`Material::specular_map`).
+    pub specular_map: Option<usize>,
     /// The object's baked light map (notes 01 §8.2), if it has one.
     pub light_map: Option<usize>,
     /// How the texture is sampled, and the uv transform (notes 01 §5).
@@ -106,6 +111,7 @@ impl DrawList {
         let mut textures = Vec::new();
         // Keyed by file and colour space: one PNG may be both.
         let mut texture_index: HashMap<(PathBuf, bool), usize> = HashMap::new();
+        let mut with_alpha: HashMap<(Option<PathBuf>, PathBuf), usize> = HashMap::new();
         let mut items = Vec::new();
         let mut bounds = Vec::new();
         let mut skins = Vec::new();
@@ -131,6 +137,9 @@ impl DrawList {
                 }
             };
             let m = &scene.materials[o.material];
+            let combined = (m.alpha_map.as_ref())
+                .map(|a| with_alpha_map(gl, &mut textures, &mut with_alpha, m, a))
+                .transpose()?; // an MTL's map_d: one texture, the diffuse with that alpha
             let mut load = |p: &PathBuf, srgb: bool| -> Result<usize> {
                 if let Some(&i) = texture_index.get(&(p.clone(), srgb)) {
                     return Ok(i);
@@ -139,13 +148,13 @@ impl DrawList {
                 texture_index.insert((p.clone(), srgb), textures.len() - 1);
                 Ok(textures.len() - 1)
             };
-            let texture = m
-                .diffuse_texture
-                .as_ref()
-                .map(|p| load(p, true))
+            let texture = (combined.map(Ok))
+                .or_else(|| m.diffuse_texture.as_ref().map(|p| load(p, true)))
                 .transpose()?;
-            // Data, not colour: a normal map is linear (GL_RGBA8), never sRGB-decoded.
-            let normal_map = m.normal_map.as_ref().map(|p| load(p, false)).transpose()?;
+            // Data, not colour: normal and specular maps are linear (GL_RGBA8).
+            let [normal_map, specular_map] =
+                [&m.normal_map, &m.specular_map].map(|p| p.as_ref().map(|p| load(p, false)));
+            let (normal_map, specular_map) = (normal_map.transpose()?, specular_map.transpose()?);
             let roughness = match o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
                 None => None,
                 Some(p) => {
@@ -166,6 +175,8 @@ impl DrawList {
                 microfacet: m.microfacet,
                 texture,
                 normal_map,
+                normal_scale: m.normal_scale,
+                specular_map,
                 light_map: light_maps[object].take().map(|t| {
                     textures.push(t);
                     textures.len() - 1
@@ -187,7 +198,7 @@ impl DrawList {
         let textured: Vec<Texturing> = scene
             .materials
             .iter()
-            .filter(|m| m.diffuse_texture.is_some() || m.normal_map.is_some())
+            .filter(|m| m.is_textured())
             .map(|m| m.texturing)
             .collect();
         let samplers = TextureSamplers::new(gl, &textured, &textures)?;
@@ -248,6 +259,7 @@ impl DrawList {
             d.microfacet = m.microfacet;
             d.alpha_test = m.alpha_test.code();
             d.alpha_ref = m.alpha_ref;
+            d.normal_scale = m.normal_scale;
             d.opacity = m.opacity;
             d.reflectivity = m.reflectivity;
             d.cull = m.cull;

@@ -5,9 +5,37 @@
 
 use crate::frame::draw_list::{DrawItem, DrawList};
 use crate::frame::uniforms::unit;
+use crate::gl::Gl;
 use crate::gl::program::Program;
+use crate::gl::texture::{Sampling, Texture};
 use crate::scene::RenderSettings;
+use crate::scene::material::Material;
+use anyhow::Result;
 use glow::HasContext;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+/// Material `m`'s diffuse texture with its alpha map's first channel as
+/// the alpha (an MTL's map_d; white where it has no diffuse texture),
+/// uploaded once per pair (`made`); its index in `textures`.
+pub fn with_alpha_map(
+    gl: &Gl,
+    textures: &mut Vec<Texture>,
+    made: &mut HashMap<(Option<PathBuf>, PathBuf), usize>,
+    m: &Material,
+    alpha: &Path,
+) -> Result<usize> {
+    let key = (m.diffuse_texture.clone(), alpha.to_path_buf());
+    if let Some(&i) = made.get(&key) {
+        return Ok(i);
+    }
+    let img = crate::gl::image_file::load_rgba8_with_alpha(m.diffuse_texture.as_deref(), alpha)?;
+    let (w, h) = img.dimensions();
+    let t = Texture::from_rgba8(gl, w, h, img.as_raw(), true, Sampling::TRILINEAR_REPEAT)?;
+    textures.push(t);
+    made.insert(key, textures.len() - 1);
+    Ok(textures.len() - 1)
+}
 
 impl DrawList {
     /// The object's diffuse texture, if its material has one; with
@@ -24,7 +52,7 @@ impl DrawList {
     /// The sampler object the object's texture is read with under `r`
     /// (glBindSampler on the diffuse texture's unit).
     pub fn sampler(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Sampler> {
-        d.texture.or(d.normal_map)?;
+        d.texture.or(d.normal_map).or(d.specular_map)?;
         self.samplers.sampler(&d.texturing, r)
     }
 
@@ -45,7 +73,10 @@ impl DrawList {
     /// glActiveTexture(NORMAL_MAP); glBindTexture; glBindSampler;
     /// glActiveTexture(DIFFUSE_TEXTURE); glBindTexture; glBindSampler;
     ///
-    /// and `u_has_normal_map`, `u_has_light_map` for program `p`. Unit DIFFUSE_TEXTURE is left
+    /// and `u_has_normal_map`, `u_normal_scale`, `u_has_light_map` for
+    /// program `p`. The specular map, if any, goes on unit SPECULAR_MAP
+    /// with the same sampler (`u_has_specular_map`), bound before the
+    /// light map. Unit DIFFUSE_TEXTURE is left
     /// active; `unbind_textures` undoes it all.
     pub fn bind_textures(&self, gl: &glow::Context, p: &Program, d: &DrawItem, r: &RenderSettings) {
         let sampler = self.sampler(d, r);
@@ -54,7 +85,11 @@ impl DrawList {
             .light_map
             .filter(|_| r.light_maps)
             .map(|t| self.textures[t].id);
+        let specular_map = d.specular_map.map(|t| self.textures[t].id);
         unsafe {
+            gl.active_texture(glow::TEXTURE0 + unit::SPECULAR_MAP);
+            gl.bind_texture(glow::TEXTURE_2D, specular_map);
+            gl.bind_sampler(unit::SPECULAR_MAP, specular_map.and(sampler));
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT_MAP);
             gl.bind_texture(glow::TEXTURE_2D, light_map);
             gl.active_texture(glow::TEXTURE0 + unit::NORMAL_MAP);
@@ -65,13 +100,20 @@ impl DrawList {
             gl.bind_sampler(unit::DIFFUSE_TEXTURE, sampler);
         }
         p.set_bool("u_has_normal_map", normal_map.is_some());
+        p.set_f32("u_normal_scale", d.normal_scale);
+        p.set_bool("u_has_specular_map", specular_map.is_some());
         p.set_bool("u_has_light_map", light_map.is_some());
     }
 
     /// Unbind what `bind_textures` bound; unit 0 is left active.
     pub fn unbind_textures(gl: &glow::Context) {
         unsafe {
-            for u in [unit::LIGHT_MAP, unit::NORMAL_MAP, unit::DIFFUSE_TEXTURE] {
+            for u in [
+                unit::SPECULAR_MAP,
+                unit::LIGHT_MAP,
+                unit::NORMAL_MAP,
+                unit::DIFFUSE_TEXTURE,
+            ] {
                 gl.active_texture(glow::TEXTURE0 + u);
                 gl.bind_texture(glow::TEXTURE_2D, None);
                 gl.bind_sampler(u, None);

@@ -41,6 +41,10 @@ pub mod unit {
     pub const NORMAL_MAP: u32 = 1;
     /// The forward pass: an object's baked light map (`u_light_map`, notes 01 §8.2).
     pub const LIGHT_MAP: u32 = 2;
+    /// Geometry passes: the material's specular map (`u_specular_map`):
+    /// FAR_SPECULAR's unit, which only tiled shading's lighting pass reads,
+    /// and no geometry pass is a lighting pass of tiled shading.
+    pub const SPECULAR_MAP: u32 = 15;
     /// Lighting passes read the G-buffer (`glsl/common/gbuffer_read.glsl`).
     pub const GBUFFER_NORMAL: u32 = 0;
     pub const GBUFFER_ALBEDO: u32 = 1;

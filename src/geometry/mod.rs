@@ -9,7 +9,10 @@
 //!   notes 04, and the bounding radius;
 //! * `normals`: smooth normals (notes 01 §8.1) and tangents for bump mapping
 //!   (notes 01 §8.4);
-//! * `obj`: Wavefront OBJ files, loaded through tobj;
+//! * `obj`: Wavefront OBJ files, loaded through tobj, whole or one part
+//!   per `usemtl`;
+//! * `mtl`: the MTL files an OBJ names, mapped onto gloss's material terms;
+//! * `polygons`: faces of more than three corners, ear-clipped;
 //! * `skin`: skinned meshes (notes 01 §7.1): skin, skeleton, clips, posing;
 //! * `gltf`, `gltf_write`: skinned meshes read from and written to glTF 2.0.
 //!
@@ -30,8 +33,10 @@
 
 mod gltf;
 mod gltf_write;
+mod mtl;
 mod normals;
 mod obj;
+mod polygons;
 mod shapes;
 pub mod skin;
 mod tangents;
@@ -39,8 +44,10 @@ mod volumes;
 
 pub use gltf::{MAX_GLTF_BYTES, MAX_GLTF_VERTICES, load_gltf};
 pub use gltf_write::write_glb;
+pub use mtl::{MAX_MTL_BYTES, MAX_MTL_MATERIALS, MtlMaterial, load_mtl, parse_mtl};
 pub use normals::compute_normals;
-pub use obj::{MAX_OBJ_BYTES, MAX_OBJ_VERTICES, load_obj};
+pub use obj::{MAX_OBJ_BYTES, MAX_OBJ_VERTICES, ObjFile, ObjPart, load_obj, load_obj_file};
+pub use polygons::{newell_normal, triangulate};
 pub use shapes::{cone, cube, cylinder, fullscreen_triangle, icosphere, plane, torus, uv_sphere};
 pub use tangents::compute_tangents;
 pub use volumes::{bounding_radius, light_volume_sphere};

@@ -1,7 +1,9 @@
 //! Wavefront OBJ loading through tobj, with size limits and errors that name
 //! the file and say what is wrong with it.
 
+use super::mtl::MtlMaterial;
 use super::normals::compute_normals;
+use super::polygons::triangulate;
 use super::tangents::compute_tangents;
 use super::{MeshData, Vertex};
 use crate::assets;
@@ -15,21 +17,76 @@ pub const MAX_OBJ_BYTES: u64 = 256 * 1024 * 1024;
 /// Most vertices `load_obj` accepts (after splitting by position/uv/normal).
 pub const MAX_OBJ_VERTICES: usize = 16_000_000;
 
-/// Loads a Wavefront OBJ through tobj (polygons triangulated, one index per
-/// vertex), merging all its objects and groups into one mesh. Materials are
-/// ignored. Objects without normals in the file get smooth normals
-/// ([`compute_normals`]); tangents are always computed. A file without uvs
-/// loads with uv (0, 0) everywhere (and arbitrary tangents).
+/// Loads a Wavefront OBJ through tobj (polygons triangulated by ear
+/// clipping, src/geometry/polygons.rs; one index per vertex), merging all
+/// its objects, groups and `usemtl` parts into one mesh. Materials are
+/// ignored (`load_obj_file` reads them). Objects without normals in the
+/// file get smooth normals ([`compute_normals`]); tangents are always
+/// computed. A file without uvs loads with uv (0, 0) everywhere (and
+/// arbitrary tangents).
 ///
 /// Refuses, with an error naming the file: a missing or unreadable file, one
 /// over 256 MiB (checked before reading) or with more than 16 million
 /// vertices, malformed content, no triangles, NaN or infinite numbers, and
 /// face indices out of range.
 pub fn load_obj(path: &Path) -> Result<MeshData> {
-    load_obj_limited(path, MAX_OBJ_BYTES, MAX_OBJ_VERTICES)
+    let file = load_obj_limited(path, MAX_OBJ_BYTES, MAX_OBJ_VERTICES, false)?;
+    Ok(merge(file.parts))
 }
 
-fn load_obj_limited(path: &Path, max_bytes: u64, max_vertices: usize) -> Result<MeshData> {
+/// One `usemtl` part of an OBJ file: the faces drawn with one material.
+#[derive(Clone, Debug)]
+pub struct ObjPart {
+    /// Index into `ObjFile::materials`; None for faces before any `usemtl`
+    /// or naming a material no MTL file defines.
+    pub material: Option<usize>,
+    pub mesh: MeshData,
+}
+
+/// An OBJ file with its materials: one part per material its faces use,
+/// in the order the file first uses them.
+#[derive(Clone, Debug)]
+pub struct ObjFile {
+    pub parts: Vec<ObjPart>,
+    /// Every material of every `mtllib`, in file order.
+    pub materials: Vec<MtlMaterial>,
+    /// What was left out (a missing MTL file or texture, an unknown
+    /// `usemtl`, an MTL key gloss does not use), one line each.
+    pub warnings: Vec<String>,
+}
+
+/// `load_obj`, keeping the file's `usemtl` parts apart and reading the MTL
+/// files its `mtllib` lines name (src/geometry/mtl.rs). A missing MTL file
+/// is a warning (its faces take the default material); a malformed one an
+/// error naming it and its line.
+pub fn load_obj_file(path: &Path) -> Result<ObjFile> {
+    load_obj_limited(path, MAX_OBJ_BYTES, MAX_OBJ_VERTICES, true)
+}
+
+/// All parts in one mesh, as `load_obj` gives it.
+fn merge(parts: Vec<ObjPart>) -> MeshData {
+    let mut mesh = MeshData::default();
+    let coloured = parts.iter().any(|p| !p.mesh.colors.is_empty());
+    for p in parts {
+        let offset = mesh.vertices.len() as u32;
+        if coloured {
+            let mut c = p.mesh.colors;
+            c.resize(p.mesh.vertices.len(), [1.0; 3]);
+            mesh.colors.extend(c);
+        }
+        mesh.vertices.extend(p.mesh.vertices);
+        mesh.indices
+            .extend(p.mesh.indices.iter().map(|i| i + offset));
+    }
+    mesh
+}
+
+fn load_obj_limited(
+    path: &Path,
+    max_bytes: u64,
+    max_vertices: usize,
+    with_materials: bool,
+) -> Result<ObjFile> {
     let name = path.display();
     let bytes: Vec<u8> = match assets::embedded(path) {
         Some(f) => f.contents().to_vec(),
@@ -72,107 +129,226 @@ fn load_obj_limited(path: &Path, max_bytes: u64, max_vertices: usize) -> Result<
     }
 
     let options = tobj::LoadOptions {
-        triangulate: true,
+        // Ear clipping here (polygons.rs), not tobj's fan.
+        triangulate: false,
         single_index: true,
         ignore_points: true,
         ignore_lines: true,
     };
-    let (models, _materials) = tobj::load_obj_buf(&mut bytes.as_slice(), &options, |_| {
-        Ok((Vec::new(), Default::default()))
-    })
-    .map_err(|e| anyhow!("malformed OBJ file {name}: {}", describe_tobj_error(&e)))?;
-
-    let mut mesh = MeshData::default();
-    for model in &models {
-        let m = &model.mesh;
-        let object = &model.name;
-        if m.positions.len() % 3 != 0 {
-            bail!("malformed OBJ file {name}: object '{object}' has a partial position");
+    let base = path.parent().unwrap_or(Path::new("."));
+    let materials = std::cell::RefCell::new(Vec::<MtlMaterial>::new());
+    let warnings = std::cell::RefCell::new(Vec::<String>::new());
+    let failed = std::cell::RefCell::new(None::<anyhow::Error>);
+    let loader = |lib: &Path| -> tobj::MTLLoadResult {
+        if !with_materials {
+            return Ok((Vec::new(), Default::default()));
         }
-        let n = m.positions.len() / 3;
-        if mesh.vertices.len() + n > max_vertices {
+        let written = lib.to_string_lossy();
+        let Some(mtl) = super::mtl::find_file(base, &written) else {
+            warnings.borrow_mut().push(format!(
+                "OBJ file {name}: mtllib {written}: {} not found: its faces take gloss's default material",
+                base.join(written.replace('\\', "/")).display()
+            ));
+            return Ok((Vec::new(), Default::default()));
+        };
+        match super::mtl::load_both(&mtl) {
+            Ok((ours, w, theirs)) => {
+                let total = materials.borrow().len() + ours.len();
+                if total > super::mtl::MAX_MTL_MATERIALS {
+                    failed.borrow_mut().get_or_insert(anyhow!(
+                        "OBJ file {name}: its MTL files define {total} materials, the limit is {}",
+                        super::mtl::MAX_MTL_MATERIALS
+                    ));
+                    return Err(tobj::LoadError::MaterialParseError);
+                }
+                materials.borrow_mut().extend(ours);
+                warnings.borrow_mut().extend(w);
+                theirs
+            }
+            Err(e) => {
+                failed.borrow_mut().get_or_insert(e);
+                Err(tobj::LoadError::MaterialParseError)
+            }
+        }
+    };
+    let (models, _materials) = tobj::load_obj_buf(&mut bytes.as_slice(), &options, loader)
+        .map_err(|e| anyhow!("malformed OBJ file {name}: {}", describe_tobj_error(&e)))?;
+    if let Some(e) = failed.into_inner() {
+        return Err(e.context(format!("OBJ file {name}: its mtllib")));
+    }
+    let materials = materials.into_inner();
+    let mut warnings = warnings.into_inner();
+    if with_materials {
+        unknown_materials(&bytes, &materials, &name.to_string(), &mut warnings);
+    }
+
+    // One part per material, in the order the file first uses it.
+    let mut parts: Vec<ObjPart> = Vec::new();
+    let mut total = 0;
+    for model in &models {
+        let mut part = model_mesh(model, &name.to_string())?;
+        total += part.vertices.len();
+        if total > max_vertices {
             bail!(
                 "OBJ file {name} is too large: more than {max_vertices} vertices after splitting by uv and normal"
             );
         }
-        let finite = |values: &[f32], what: &str| -> Result<()> {
-            match values.iter().position(|x| !x.is_finite()) {
-                Some(_) => bail!("OBJ file {name}: object '{object}' has a NaN or infinite {what}"),
-                None => Ok(()),
+        let material = model.mesh.material_id.filter(|&m| m < materials.len());
+        if part.indices.is_empty() {
+            continue;
+        }
+        compute_tangents(&mut part);
+        match parts.iter_mut().find(|p| p.material == material) {
+            Some(p) => {
+                let old = std::mem::take(&mut p.mesh);
+                p.mesh = merge(vec![
+                    ObjPart {
+                        material,
+                        mesh: old,
+                    },
+                    ObjPart {
+                        material,
+                        mesh: part,
+                    },
+                ]);
             }
-        };
-        finite(&m.positions, "vertex position")?;
-        finite(&m.normals, "normal")?;
-        finite(&m.texcoords, "texture coordinate")?;
-        if m.indices.len() % 3 != 0 {
-            bail!("malformed OBJ file {name}: object '{object}' has a partial triangle");
+            None => parts.push(ObjPart {
+                material,
+                mesh: part,
+            }),
         }
-        if let Some(&bad) = m.indices.iter().find(|&&i| i as usize >= n) {
-            bail!(
-                "OBJ file {name}: object '{object}' has face index {bad} out of range ({n} vertices)"
-            );
-        }
-        finite(&m.vertex_color, "vertex colour")?;
-        let has_normals = m.normals.len() == m.positions.len();
-        let has_colors = m.vertex_color.len() == m.positions.len();
-        let has_uvs = m.texcoords.len() == 2 * n;
-        let mut part = MeshData {
-            vertices: (0..n)
-                .map(|i| Vertex {
-                    position: [
-                        m.positions[3 * i],
-                        m.positions[3 * i + 1],
-                        m.positions[3 * i + 2],
-                    ],
-                    normal: if has_normals {
-                        [m.normals[3 * i], m.normals[3 * i + 1], m.normals[3 * i + 2]]
-                    } else {
-                        [0.0; 3]
-                    },
-                    uv: if has_uvs {
-                        [m.texcoords[2 * i], m.texcoords[2 * i + 1]]
-                    } else {
-                        [0.0; 2]
-                    },
-                    tangent: [1.0, 0.0, 0.0, 1.0],
-                })
-                .collect(),
-            indices: m.indices.clone(),
-            colors: if has_colors {
-                m.vertex_color
-                    .chunks_exact(3)
-                    .map(|c| [c[0], c[1], c[2]])
-                    .collect()
-            } else {
-                Vec::new()
-            },
-        };
-        if !has_normals {
-            compute_normals(&mut part);
-        }
-        // Colours for every vertex once any object has them (white for the others).
-        if !part.colors.is_empty() || !mesh.colors.is_empty() {
-            mesh.colors.resize(mesh.vertices.len(), [1.0; 3]);
-            let mut c = std::mem::take(&mut part.colors);
-            c.resize(part.vertices.len(), [1.0; 3]);
-            mesh.colors.extend(c);
-        }
-        let offset = mesh.vertices.len() as u32;
-        for mut v in part.vertices {
-            // File normals of zero length fall back to +y rather than NaN.
-            v.normal = Vec3::from(v.normal)
-                .try_normalize()
-                .unwrap_or(Vec3::Y)
-                .to_array();
-            mesh.vertices.push(v);
-        }
-        mesh.indices.extend(part.indices.iter().map(|i| i + offset));
     }
-    if mesh.indices.len() < 3 {
+    if parts.iter().all(|p| p.mesh.indices.len() < 3) {
         bail!("OBJ file {name} contains no triangles");
     }
-    compute_tangents(&mut mesh);
-    Ok(mesh)
+    Ok(ObjFile {
+        parts,
+        materials,
+        warnings,
+    })
+}
+
+/// One tobj model as a checked, triangulated mesh with unit normals.
+fn model_mesh(model: &tobj::Model, name: &str) -> Result<MeshData> {
+    let m = &model.mesh;
+    let object = &model.name;
+    if !m.positions.len().is_multiple_of(3) {
+        bail!("malformed OBJ file {name}: object '{object}' has a partial position");
+    }
+    let n = m.positions.len() / 3;
+    let finite = |values: &[f32], what: &str| -> Result<()> {
+        match values.iter().position(|x| !x.is_finite()) {
+            Some(_) => bail!("OBJ file {name}: object '{object}' has a NaN or infinite {what}"),
+            None => Ok(()),
+        }
+    };
+    finite(&m.positions, "vertex position")?;
+    finite(&m.normals, "normal")?;
+    finite(&m.texcoords, "texture coordinate")?;
+    if let Some(&bad) = m.indices.iter().find(|&&i| i as usize >= n) {
+        bail!(
+            "OBJ file {name}: object '{object}' has face index {bad} out of range ({n} vertices)"
+        );
+    }
+    let indices = triangles(m, name, object)?;
+    finite(&m.vertex_color, "vertex colour")?;
+    let has_normals = m.normals.len() == m.positions.len();
+    let has_colors = m.vertex_color.len() == m.positions.len();
+    let has_uvs = m.texcoords.len() == 2 * n;
+    let mut part = MeshData {
+        vertices: (0..n)
+            .map(|i| Vertex {
+                position: [
+                    m.positions[3 * i],
+                    m.positions[3 * i + 1],
+                    m.positions[3 * i + 2],
+                ],
+                normal: if has_normals {
+                    [m.normals[3 * i], m.normals[3 * i + 1], m.normals[3 * i + 2]]
+                } else {
+                    [0.0; 3]
+                },
+                uv: if has_uvs {
+                    [m.texcoords[2 * i], m.texcoords[2 * i + 1]]
+                } else {
+                    [0.0; 2]
+                },
+                tangent: [1.0, 0.0, 0.0, 1.0],
+            })
+            .collect(),
+        indices,
+        colors: if has_colors {
+            m.vertex_color
+                .chunks_exact(3)
+                .map(|c| [c[0], c[1], c[2]])
+                .collect()
+        } else {
+            Vec::new()
+        },
+    };
+    if !has_normals {
+        compute_normals(&mut part);
+    }
+    for v in &mut part.vertices {
+        // File normals of zero length fall back to +y rather than NaN.
+        v.normal = Vec3::from(v.normal)
+            .try_normalize()
+            .unwrap_or(Vec3::Y)
+            .to_array();
+    }
+    Ok(part)
+}
+
+/// The model's faces as triangles: each face of n corners (tobj's
+/// `face_arities`; none when every face is a triangle) ear-clipped.
+fn triangles(m: &tobj::Mesh, name: &str, object: &str) -> Result<Vec<u32>> {
+    if m.face_arities.is_empty() {
+        if !m.indices.len().is_multiple_of(3) {
+            bail!("malformed OBJ file {name}: object '{object}' has a partial triangle");
+        }
+        return Ok(m.indices.clone());
+    }
+    let total: usize = m.face_arities.iter().map(|&a| a as usize).sum();
+    if total != m.indices.len() {
+        bail!("malformed OBJ file {name}: object '{object}' has a partial face");
+    }
+    let mut out = Vec::with_capacity(3 * total);
+    let mut at = 0;
+    for &arity in &m.face_arities {
+        let face = &m.indices[at..at + arity as usize];
+        at += arity as usize;
+        let corners: Vec<Vec3> = face
+            .iter()
+            .map(|&i| Vec3::from_slice(&m.positions[3 * i as usize..3 * i as usize + 3]))
+            .collect();
+        out.extend(triangulate(&corners).iter().map(|&k| face[k as usize]));
+    }
+    Ok(out)
+}
+
+/// A warning for each `usemtl` name no MTL file defines (tobj drops the name).
+fn unknown_materials(bytes: &[u8], materials: &[MtlMaterial], name: &str, w: &mut Vec<String>) {
+    let mut seen: Vec<String> = Vec::new();
+    for line in bytes.split(|&b| b == b'\n') {
+        let line = String::from_utf8_lossy(line);
+        let Some(m) = line.trim().strip_prefix("usemtl") else {
+            continue;
+        };
+        let m = m.trim();
+        if m.is_empty() || materials.iter().any(|x| x.name == m) || seen.iter().any(|s| s == m) {
+            continue;
+        }
+        if seen.len() == 16 {
+            w.push(format!(
+                "OBJ file {name}: more usemtl names no MTL file defines"
+            ));
+            break;
+        }
+        seen.push(m.to_string());
+        w.push(format!(
+            "OBJ file {name}: usemtl {m}: no MTL file defines it: its faces take gloss's default material"
+        ));
+    }
 }
 
 fn describe_tobj_error(e: &tobj::LoadError) -> String {
@@ -187,170 +363,4 @@ fn describe_tobj_error(e: &tobj::LoadError) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::geometry::tests::check_mesh;
-    use std::path::PathBuf;
-
-    fn temp_obj(name: &str, contents: &[u8]) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("gloss-geometry-tests-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join(name);
-        std::fs::write(&path, contents).unwrap();
-        path
-    }
-
-    fn load_err(name: &str, contents: &str) -> String {
-        let path = temp_obj(name, contents.as_bytes());
-        let err = load_obj(&path).expect_err("should fail");
-        let msg = format!("{err:#}");
-        assert!(msg.contains(name), "error does not name the file: {msg}");
-        msg
-    }
-
-    const QUAD: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
-
-    #[test]
-    fn load_obj_quad_without_normals() {
-        let path = temp_obj(
-            "quad.obj",
-            format!("{QUAD}o a\nf 1/1 2/2 3/3 4/4\n").as_bytes(),
-        );
-        let m = load_obj(&path).unwrap();
-        assert_eq!((m.vertices.len(), m.indices.len()), (4, 6));
-        check_mesh("quad.obj", &m);
-        for v in &m.vertices {
-            assert_eq!(v.normal, [0.0, 0.0, 1.0]);
-            assert_eq!(v.tangent, [1.0, 0.0, 0.0, 1.0]);
-        }
-    }
-
-    #[test]
-    fn load_obj_merges_models_and_keeps_file_normals() {
-        let text = format!("{QUAD}vn 0 0 2\no a\nf 1/1/1 2/2/1 3/3/1\no b\nf 1/1 3/3 4/4\n");
-        let m = load_obj(&temp_obj("two.obj", text.as_bytes())).unwrap();
-        assert_eq!(m.triangle_count(), 2);
-        check_mesh("two.obj", &m);
-        // The first object's file normal (normalised); no uvs -> still finite.
-        assert_eq!(m.vertices[0].normal, [0.0, 0.0, 1.0]);
-        let m = load_obj(&temp_obj(
-            "nouv.obj",
-            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-        ))
-        .unwrap();
-        check_mesh("nouv.obj", &m);
-    }
-
-    #[test]
-    fn load_obj_missing_file() {
-        let path = std::env::temp_dir().join("gloss-no-such-dir/missing.obj");
-        let msg = format!("{:#}", load_obj(&path).unwrap_err());
-        assert!(
-            msg.contains("OBJ file") && msg.contains("missing.obj does not exist"),
-            "{msg}"
-        );
-    }
-
-    #[test]
-    fn load_obj_malformed() {
-        let msg = load_err("malformed.obj", "v 1.0 abc 2.0\nf 1 1 1\n");
-        assert!(
-            msg.contains("malformed OBJ file") && msg.contains("position parse error"),
-            "{msg}"
-        );
-        let msg = load_err("badface.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 two 3\n");
-        assert!(
-            msg.contains("malformed OBJ file") && msg.contains("face parse error"),
-            "{msg}"
-        );
-        let path = temp_obj("binary.obj", &[0xff, 0xfe, 0x00, 0x76, 0x20, 0x31, 0x0a]);
-        let msg = format!("{:#}", load_obj(&path).unwrap_err());
-        assert!(
-            msg.contains("malformed OBJ file") && msg.contains("binary.obj"),
-            "{msg}"
-        );
-    }
-
-    #[test]
-    fn load_obj_no_triangles() {
-        let msg = load_err("empty.obj", "");
-        assert!(msg.contains("contains no triangles"), "{msg}");
-        let msg = load_err("lines.obj", "v 0 0 0\nv 1 0 0\nl 1 2\np 1\n");
-        assert!(msg.contains("contains no triangles"), "{msg}");
-    }
-
-    #[test]
-    fn load_obj_non_finite() {
-        let msg = load_err("nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-        assert!(msg.contains("NaN or infinite vertex position"), "{msg}");
-        let msg = load_err("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n");
-        assert!(msg.contains("NaN or infinite vertex position"), "{msg}");
-        let msg = load_err(
-            "nanvt.obj",
-            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt NaN 0\nf 1/1 2/1 3/1\n",
-        );
-        assert!(msg.contains("NaN or infinite texture coordinate"), "{msg}");
-    }
-
-    #[test]
-    fn load_obj_index_out_of_range() {
-        let msg = load_err("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
-        assert!(msg.contains("face index out of range"), "{msg}");
-        let msg = load_err(
-            "rangevt.obj",
-            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/5 3/1\n",
-        );
-        assert!(msg.contains("face index out of range"), "{msg}");
-    }
-
-    #[test]
-    fn load_obj_too_large() {
-        // The real limits are 256 MiB and 16M vertices; the same checks run
-        // here with small limits so the test files stay small.
-        let path = temp_obj("big.obj", format!("{QUAD}f 1 2 3 4\n").as_bytes());
-        let msg = format!(
-            "{:#}",
-            load_obj_limited(&path, 16, MAX_OBJ_VERTICES).unwrap_err()
-        );
-        assert!(
-            msg.contains("big.obj") && msg.contains("too large") && msg.contains("bytes"),
-            "{msg}"
-        );
-        let msg = format!(
-            "{:#}",
-            load_obj_limited(&path, MAX_OBJ_BYTES, 3).unwrap_err()
-        );
-        assert!(
-            msg.contains("big.obj")
-                && msg.contains("too large")
-                && msg.contains("vertex positions"),
-            "{msg}"
-        );
-        // 3 positions but 6 vertices once split by uv.
-        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 1\nf 1/1 2/1 3/1\nf 1/2 3/2 2/2\n";
-        let path = temp_obj("split.obj", text.as_bytes());
-        let msg = format!(
-            "{:#}",
-            load_obj_limited(&path, MAX_OBJ_BYTES, 5).unwrap_err()
-        );
-        assert!(
-            msg.contains("split.obj") && msg.contains("after splitting"),
-            "{msg}"
-        );
-        assert!(load_obj_limited(&path, MAX_OBJ_BYTES, 6).is_ok());
-    }
-
-    #[test]
-    fn committed_assets_load() {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/assets");
-        for name in ["knot.obj", "rock.obj"] {
-            let path = dir.join(name);
-            if !path.exists() {
-                continue; // generated by `cargo run --release --example gen_assets`
-            }
-            let m = load_obj(&path).unwrap();
-            check_mesh(name, &m);
-            assert!(m.triangle_count() > 50);
-        }
-    }
-}
+mod tests;

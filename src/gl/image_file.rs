@@ -1,6 +1,9 @@
 //! Image files decoded for textures, through the `image` crate: PNG (grey,
-//! grey + alpha, RGB, RGBA; 8 or 16 bits a channel) to RGBA8, flipped so
-//! that v = 0 is the bottom row, with absurd sizes refused before decoding.
+//! grey + alpha, RGB, RGBA; 8 or 16 bits a channel), JPEG (baseline and
+//! progressive), TGA and BMP, to RGBA8, flipped so that v = 0 is the bottom
+//! row, with absurd sizes refused before decoding and the same
+//! `image::Limits` for every format. The format is read from the file's
+//! first bytes; TGA, which has no signature, from its extension.
 
 use crate::assets;
 use anyhow::{Context as _, Result, bail};
@@ -38,6 +41,36 @@ pub fn load_rgba8(path: &Path) -> Result<image::RgbaImage> {
     Ok(image::imageops::flip_vertical(&img.to_rgba8()))
 }
 
+/// Whether the image file has an alpha channel, from its header alone (an
+/// OBJ's map_Kd with alpha is alpha-tested: src/scene/obj_materials.rs).
+pub fn has_alpha(path: &Path) -> Result<bool> {
+    if let Some(why) = assets::not_a_file(path) {
+        bail!("texture {} {why}", path.display());
+    }
+    let decoder = reader(path)?
+        .into_decoder()
+        .with_context(|| format!("texture {} is not a readable image", path.display()))?;
+    Ok(image::ImageDecoder::color_type(&decoder).has_alpha())
+}
+
+/// `load_rgba8` with the alpha taken from the first channel (red, or grey)
+/// of the image at `alpha` (an MTL's map_d), scaled to the colour image's
+/// size (nearest texel); without `colour`, white with that alpha.
+pub fn load_rgba8_with_alpha(colour: Option<&Path>, alpha: &Path) -> Result<image::RgbaImage> {
+    let a = load_rgba8(alpha)?;
+    let mut img = match colour {
+        Some(c) => load_rgba8(c)?,
+        None => image::RgbaImage::from_pixel(a.width(), a.height(), image::Rgba([255; 4])),
+    };
+    let (w, h) = img.dimensions();
+    for (x, y, p) in img.enumerate_pixels_mut() {
+        let ax = (u64::from(x) * u64::from(a.width()) / u64::from(w)) as u32;
+        let ay = (u64::from(y) * u64::from(a.height()) / u64::from(h)) as u32;
+        p.0[3] = a.get_pixel(ax, ay).0[0];
+    }
+    Ok(img)
+}
+
 /// The width and height of an image file, from its header alone (the frame
 /// plan reports a texture's memory without decoding it).
 pub fn dimensions(path: &Path) -> Result<(u32, u32)> {
@@ -59,9 +92,15 @@ fn reader(path: &Path) -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
                 .with_context(|| format!("cannot open texture {}", path.display()))?,
         )),
     };
-    image::ImageReader::new(reader)
+    let mut r = image::ImageReader::new(reader)
         .with_guessed_format()
-        .with_context(|| format!("cannot read texture {}", path.display()))
+        .with_context(|| format!("cannot read texture {}", path.display()))?;
+    if r.format().is_none()
+        && let Ok(f) = image::ImageFormat::from_path(path)
+    {
+        r.set_format(f);
+    }
+    Ok(r)
 }
 
 /// What `image` reads from: a file or embedded bytes.

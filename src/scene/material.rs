@@ -150,11 +150,57 @@ pub struct Material {
     pub winding: Winding,
     /// How its texture is sampled: wrap, filter, uv transform (notes 01 §5).
     pub texturing: texturing::Texturing,
+    /// A specular map (an MTL's map_Ks; LearnOpenGL's "lighting maps"):
+    /// linear RGB that multiplies the specular colour (or k_s) per texel;
+    /// sampled like the diffuse texture.
+    pub specular_map: Option<PathBuf>,
+    /// The normal map's strength (an MTL's `-bm`, glTF's normalTexture
+    /// scale): the map's x and y are multiplied by it before normalising.
+    pub normal_scale: f32,
+    /// An alpha map (an MTL's map_d): its first channel replaces the
+    /// diffuse texture's alpha (a white texture when there is none), so the
+    /// alpha test, the shadow pass's included, reads it.
+    pub alpha_map: Option<PathBuf>,
+}
+
+impl Default for Material {
+    /// gloss's default material (material 0: what an object without
+    /// `material` is drawn with).
+    fn default() -> Self {
+        Material {
+            name: "default".into(),
+            diffuse: Vec3::splat(0.6),
+            diffuse_texture: None,
+            normal_map: None,
+            specular: Vec3::splat(0.3),
+            shininess: 32.0,
+            microfacet: None,
+            alpha_test: AlphaTest::Always,
+            alpha_ref: 0.5,
+            opacity: 1.0,
+            reflectivity: 0.0,
+            depth_func: None,
+            cull: Cull::Back,
+            winding: Winding::Ccw,
+            texturing: Default::default(),
+            specular_map: None,
+            normal_scale: 1.0,
+            alpha_map: None,
+        }
+    }
 }
 
 impl Material {
     /// Drawn by the transparency pass, not by the opaque passes.
     pub fn is_transparent(&self) -> bool {
         self.opacity < 1.0
+    }
+
+    /// Samples a texture: a diffuse texture or any map.
+    pub fn is_textured(&self) -> bool {
+        self.diffuse_texture.is_some()
+            || self.normal_map.is_some()
+            || self.specular_map.is_some()
+            || self.alpha_map.is_some()
     }
 }

@@ -26,6 +26,7 @@ mod lights;
 pub mod material;
 pub mod meshes;
 mod mirrors;
+pub mod obj_materials;
 pub mod object_fields;
 mod overrides;
 pub mod particles;
@@ -152,6 +153,9 @@ pub enum MeshSource {
     Cone,
     Torus,
     Obj(PathBuf),
+    /// Part k of an OBJ file: the faces of its k-th material
+    /// (src/scene/obj_materials.rs).
+    ObjPart(PathBuf, usize),
     /// A skinned mesh in a glTF 2.0 file (src/scene/skins.rs).
     Gltf(PathBuf),
 }
@@ -266,6 +270,9 @@ pub struct Scene {
     /// Every key the file and `--set` wrote, dotted (`render.cutoff`,
     /// `lights[0].shadow.cube`): `warnings` names those with no effect.
     pub keys_written: std::collections::BTreeSet<String>,
+    /// What loading the scene's model files left out (an OBJ's missing
+    /// textures, unknown MTL keys), one line each; `warnings` adds them.
+    pub file_warnings: Vec<String>,
 }
 
 impl Scene {

@@ -4,7 +4,7 @@
 //! One function per section of the file, in the order they are checked.
 
 use super::file::SceneFile;
-use super::{AlphaTest, Material, MeshSource, Object, Scene};
+use super::{Material, MeshSource, Object, Scene};
 use crate::assets;
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
@@ -32,6 +32,7 @@ pub use super::render_settings::{
 
 /// Checks every section of `f` (read from `path`) and builds the [`Scene`].
 pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
+    super::meshes::forget_obj_files();
     // The fields' objects, after the file's own.
     let generated = super::object_fields::expand(&f.object_fields)?;
     f.objects.extend(generated);
@@ -46,8 +47,8 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     let views = super::views::views(&f, base)?;
     let render = super::render_settings::render_settings(&f)?;
     let lights = super::lights::lights(&f)?;
-    let (materials, material_index) = materials(&f, base)?;
-    let objects = objects(&f, &material_index, base)?;
+    let (mut materials, material_index) = materials(&f, base)?;
+    let (objects, file_warnings) = objects(&f, &material_index, &mut materials, base)?;
     let mirrors = objects.iter().filter(|o| o.mirror.is_some()).count();
     if mirrors > 0 && !views.is_empty() {
         bail!(
@@ -96,6 +97,7 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
         sky: super::sky::sky(&f.sky)?,
         skybox: super::skybox::skybox(&f.skybox, f.sky.is_some(), base)?,
         keys_written: Default::default(),
+        file_warnings,
     };
     // The instant the file asks for.
     super::skybox::check_reflective(&scene)?;
@@ -108,23 +110,7 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
 fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<String, usize>)> {
     let mut names: Vec<&String> = f.materials.keys().collect();
     names.sort();
-    let mut materials = vec![Material {
-        name: "default".into(),
-        diffuse: Vec3::splat(0.6),
-        diffuse_texture: None,
-        normal_map: None,
-        specular: Vec3::splat(0.3),
-        shininess: 32.0,
-        microfacet: None,
-        alpha_test: AlphaTest::Always,
-        alpha_ref: 0.5,
-        opacity: 1.0,
-        reflectivity: 0.0,
-        depth_func: None,
-        cull: super::Cull::Back,
-        winding: super::Winding::Ccw,
-        texturing: Default::default(),
-    }];
+    let mut materials = vec![Material::default()];
     let mut material_index = HashMap::new();
     for n in names {
         let m = &f.materials[n];
@@ -189,6 +175,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             cull: m.cull.unwrap_or(super::Cull::Back),
             winding: m.winding.unwrap_or(super::Winding::Ccw),
             texturing: super::texturing::texturing(n, m)?,
+            ..Material::default()
         });
     }
     Ok((materials, material_index))
@@ -198,8 +185,9 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
 fn objects(
     f: &SceneFile,
     material_index: &HashMap<String, usize>,
+    materials: &mut Vec<Material>,
     base: &Path,
-) -> Result<Vec<Object>> {
+) -> Result<(Vec<Object>, Vec<String>)> {
     let mut locals = Vec::new();
     let mut object_names: HashMap<String, usize> = HashMap::new();
     let mut skins = super::skins::Loaded::default();
@@ -293,6 +281,36 @@ fn objects(
             light_map: super::light_maps::light_map(i, o.light_map, &locals[i].1)?,
         });
     }
+    // An OBJ with its own materials: one object per `usemtl` part.
+    let mut extra = Vec::new();
+    let mut warnings = Vec::new();
+    let mut first = Vec::new();
+    let taken = |n: &str| object_names.contains_key(n);
+    for (i, o) in objects.iter_mut().enumerate() {
+        let MeshSource::Obj(path) = o.mesh.clone() else {
+            continue;
+        };
+        let own = f.objects[i].material.is_none();
+        if !own || o.mirror.is_some() {
+            continue;
+        }
+        if o.light_map.is_some() {
+            warnings.push(format!(
+                "objects[{i}]: an object with a light_map is one mesh: {}'s MTL materials are not used (give it a material)",
+                path.display()
+            ));
+            continue;
+        }
+        let w =
+            super::obj_materials::expand(o, i, &path, materials, &mut first, &mut extra, &taken)
+                .map_err(|e| anyhow!("{}: {e:#}", format_args!("objects[{i}].mesh")))?;
+        for w in w {
+            if !warnings.contains(&w) {
+                warnings.push(w);
+            }
+        }
+    }
+    objects.extend(extra);
     super::update_models(&mut objects);
     for (i, o) in objects.iter().enumerate() {
         if o.mirror.as_ref().is_some_and(|m| m.curved) {
@@ -308,7 +326,7 @@ fn objects(
             );
         }
     }
-    Ok(objects)
+    Ok((objects, warnings))
 }
 
 /// A path written in a scene file: relative to the file, unless it names a

@@ -122,7 +122,9 @@ impl Scene {
                     t.insert("rotation".into(), vec3(o.rotation));
                     t.insert("scale".into(), vec3(o.scale));
                     let mesh = match &o.mesh {
-                        MeshSource::Obj(p) | MeshSource::Gltf(p) => path(p),
+                        MeshSource::Obj(p) | MeshSource::Gltf(p) | MeshSource::ObjPart(p, _) => {
+                            path(p)
+                        }
                         builtin => format!("{builtin:?}").to_lowercase().into(),
                     };
                     t.insert("mesh".into(), mesh);
@@ -132,6 +134,8 @@ impl Scene {
                         t.insert("clip".into(), clip.into());
                     }
                     match o.material {
+                        // The OBJ's own materials (src/scene/obj_materials.rs).
+                        _ if matches!(o.mesh, MeshSource::ObjPart(..)) => t.remove("material"),
                         0 => t.remove("material"),
                         i => t.insert("material".into(), self.materials[i].name.clone().into()),
                     };

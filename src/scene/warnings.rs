@@ -24,6 +24,7 @@ impl Scene {
         self.material_warnings(&mut w);
         self.camera_warnings(&mut w);
         self.skybox_warnings(&mut w);
+        w.extend(self.file_warnings.iter().cloned());
         // What loading each skinned mesh's file said, once per file.
         let mut seen = Vec::new();
         for s in self.objects.iter().filter_map(|o| o.skin.as_ref()) {

@@ -8,6 +8,8 @@
 //!   and frame plan are then made) or an error whose message is not empty
 //!   and at most `MAX_MESSAGE_CHARS` after the file's name.
 //! * `obj`: `geometry::load_obj` on arbitrary bytes and mutated OBJ files.
+//! * `mtl`: the MTL reader, through an OBJ's `mtllib`, on arbitrary bytes,
+//!   MTL-shaped lines, and a full MTL mutated and cut.
 //! * `png`: `gl::texture::load_rgba8` on mutated PNGs (CRCs fixed up or
 //!   not, IHDR sizes made extreme).
 //! * `cli`: `cli::Cli::try_parse_from` on argument vectors.
@@ -26,6 +28,7 @@
 mod alloc;
 mod cli;
 mod gltf;
+mod mtl;
 mod obj;
 mod png;
 mod regressions;

@@ -5,7 +5,7 @@
 //! * `scene-*/`: a scene file, read as if it lay in scenes/ (so that
 //!   `assets/...` paths resolve); leading `# --set KEY=VALUE` lines are
 //!   overrides.
-//! * `obj-*/`, `png-*/`, `gltf-*/`: the file's bytes.
+//! * `obj-*/`, `mtl-*/`, `png-*/`, `gltf-*/`: the file's bytes.
 //! * `cli/`: one argument a line.
 
 use crate::root;
@@ -46,6 +46,8 @@ fn every_kept_input_still_holds() {
             crate::scene::check(&text, &root().join("scenes/regression.toml"), &overrides)
         } else if kind.starts_with("obj") {
             crate::obj::check(&bytes)
+        } else if kind.starts_with("mtl") {
+            crate::mtl::check(&bytes)
         } else if kind.starts_with("png") {
             crate::png::check(&bytes)
         } else if kind.starts_with("gltf") {
@@ -69,6 +71,7 @@ fn every_kept_input_still_holds() {
     for kind in [
         "scene-mutated",
         "obj-shaped",
+        "mtl-mutated",
         "png-mutated",
         "gltf-mutated",
         "cli",

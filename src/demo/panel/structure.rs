@@ -38,10 +38,12 @@ fn choose(
 /// The name a mesh goes by in the panel.
 fn mesh_name(m: &MeshSource) -> String {
     match m {
-        MeshSource::Obj(p) | MeshSource::Gltf(p) => p.file_name().map_or_else(
-            || p.display().to_string(),
-            |n| n.to_string_lossy().into_owned(),
-        ),
+        MeshSource::Obj(p) | MeshSource::Gltf(p) | MeshSource::ObjPart(p, _) => {
+            p.file_name().map_or_else(
+                || p.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            )
+        }
         other => format!("{other:?}").to_lowercase(),
     }
 }

@@ -179,6 +179,7 @@ impl RunPasses for Transparency {
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
+            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
             // Texture coordinates and vertex colours perspective-correct or
             // affine (notes 01 §4.1, §5.1).
             let affine = f.scene.render.interpolation == Interpolation::Affine;

@@ -191,6 +191,7 @@ impl RunPasses for Forward {
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
             p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
+            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
             p.set_i32("u_light_map", unit::LIGHT_MAP as i32);
             // The environment reflective materials mirror (notes 03,
             // Implementation), filtered across the cube map's faces.

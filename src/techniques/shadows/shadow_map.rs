@@ -16,20 +16,27 @@
 //! lighting shader: glsl/common/shadow.glsl, with the maps bound by
 //! src/frame/shadows.rs.
 //!
+//! An alpha-tested caster (a material with an alpha test: an OBJ's cut-out
+//! leaves) binds its diffuse texture on unit DIFFUSE_TEXTURE and the shaders
+//! discard what the test rejects (glsl/shadows/shadow_alpha.glsl), for
+//! every light type: the 2D map and both ways of drawing the cube.
+//!
 //! GL state: sets the viewport to the map, depth test and writes,
 //! GL_DEPTH_CLAMP, glPolygonOffset for the slope-scaled bias, and with
 //! `cull_front` glCullFace(GL_FRONT); restores no depth test, GL_LESS, no
-//! depth clamp, no polygon offset, no culling, GL_BACK, GL_CCW.
+//! depth clamp, no polygon offset, no culling, GL_BACK, GL_CCW, and no
+//! texture or sampler on unit DIFFUSE_TEXTURE (unit 0 active).
 
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::shadows::{Caster, casters};
 use crate::frame::targets::TargetDesc;
 use crate::frame::targets::format_name;
+use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::depth_map;
 use crate::gl::program::Program;
-use crate::scene::{CubeRender, LightKind, Scene};
+use crate::scene::{AlphaTest, CubeRender, Cull, LightKind, Scene};
 use anyhow::Result;
 use glow::HasContext;
 
@@ -43,6 +50,7 @@ pub const SHADOW_MAP: Technique = Technique {
         "shadows/shadow_cube.vert",
         "shadows/shadow_cube.geom",
         "shadows/shadow_cube.frag",
+        "shadows/shadow_alpha.glsl",
     ],
     scene: "scenes/shadows-directional.toml",
     docs: "docs/shadows.md",
@@ -185,7 +193,7 @@ impl RunPasses for ShadowMap {
                     gl.bind_framebuffer(glow::FRAMEBUFFER, Some(map.framebuffers[face]));
                     gl.clear(glow::DEPTH_BUFFER_BIT);
                     program.set_mat4("u_light_view_projection", vp);
-                    draw_casters(gl, program, f, std::slice::from_ref(vp));
+                    draw_casters(gl, program, f, std::slice::from_ref(vp), s.cull_front);
                 }
             } else {
                 // The whole cube attached as a layered image: one clear
@@ -196,7 +204,7 @@ impl RunPasses for ShadowMap {
                 for (face, vp) in view.view_projections.iter().enumerate() {
                     program.set_mat4(&format!("u_face_view_projection[{face}]"), vp);
                 }
-                draw_casters(gl, program, f, &view.view_projections);
+                draw_casters(gl, program, f, &view.view_projections, s.cull_front);
             }
 
             // Restore the state this pass changed.
@@ -217,7 +225,15 @@ impl RunPasses for ShadowMap {
 /// no shadow here. With `render.frustum_culling`, only the casters inside
 /// the frustum of one of `faces` (the light's view-projections this draw
 /// reaches; notes 01 §6.3), counted in `DrawList::shadow_cull`.
-fn draw_casters(gl: &glow::Context, p: &Program, f: &Frame, faces: &[glam::Mat4]) {
+/// With `cull_front`, a two-sided material (`cull = "none"`: a leaf's
+/// quad) is drawn without culling, so that it casts from either side.
+fn draw_casters(
+    gl: &glow::Context,
+    p: &Program,
+    f: &Frame,
+    faces: &[glam::Mat4],
+    cull_front: bool,
+) {
     let mut keep = vec![true; f.draws.items.len()];
     if f.scene.render.frustum_culling {
         let mut any = vec![false; keep.len()];
@@ -236,9 +252,44 @@ fn draw_casters(gl: &glow::Context, p: &Program, f: &Frame, faces: &[glam::Mat4]
         keep = any;
     }
     let casters = (f.draws.items.iter().zip(keep)).filter(|(d, k)| *k && !d.transparent);
+    let mut bound = false;
     for (d, _) in casters {
         unsafe { gl.front_face(if d.mirrored { glow::CW } else { glow::CCW }) };
+        if cull_front {
+            match d.cull {
+                Cull::None => unsafe { gl.disable(glow::CULL_FACE) },
+                _ => unsafe { gl.enable(glow::CULL_FACE) },
+            }
+        }
         p.set_mat4("u_model", &d.model);
+        // 2. An alpha-tested caster runs its material's alpha test on its
+        // diffuse texture (glsl/shadows/shadow_alpha.glsl): a leaf casts a
+        // leaf, not its quad.
+        let tested = d.alpha_test != AlphaTest::Always.code();
+        p.set_i32("u_alpha_test", d.alpha_test);
+        if tested {
+            let texture = d.texture.map(|t| f.draws.textures[t].id);
+            p.set_f32("u_alpha_ref", d.alpha_ref);
+            p.set_bool("u_has_diffuse_texture", texture.is_some());
+            let (scale, offset) = (d.texturing.uv_scale, d.texturing.uv_offset);
+            p.set_vec4(
+                "u_uv_transform",
+                glam::Vec4::new(scale[0], scale[1], offset[0], offset[1]),
+            );
+            unsafe {
+                gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+                gl.bind_texture(glow::TEXTURE_2D, texture);
+                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
+            }
+            bound = true;
+        }
         f.draws.mesh(d).draw();
+    }
+    if bound {
+        unsafe {
+            gl.bind_texture(glow::TEXTURE_2D, None);
+            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
+            gl.active_texture(glow::TEXTURE0);
+        }
     }
 }

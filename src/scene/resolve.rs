@@ -46,8 +46,13 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     let views = super::views::views(&f, base)?;
     let render = super::render_settings::render_settings(&f)?;
     let lights = super::lights::lights(&f)?;
-    let (materials, material_index) = materials(&f, base)?;
-    let objects = objects(&f, &material_index, base)?;
+    let (mut materials, material_index) = materials(&f, base)?;
+    let (mut objects, loaded) = objects(&f, &material_index, base)?;
+    // Each glTF file's nodes, as children of its entry.
+    let gltf = super::gltf_objects::expand(&f.objects, &mut objects, &mut materials, &loaded)?;
+    if !gltf.tracks.is_empty() || objects.len() > f.objects.len() {
+        super::update_models(&mut objects);
+    }
     let mirrors = objects.iter().filter(|o| o.mirror.is_some()).count();
     if mirrors > 0 && !views.is_empty() {
         bail!(
@@ -72,7 +77,12 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     let (sprites, billboards) = super::billboards::billboards(&f, base)?;
     let post = super::post::chain(&f.post)?;
 
-    let animation = super::animation::resolve(&f.animation, &objects)?;
+    let mut animation = super::animation::resolve(&f.animation, &objects)?;
+    let moved: std::collections::HashSet<usize> = animation.rest.iter().map(|r| r.0).collect();
+    animation.tracks.extend(gltf.tracks);
+    animation
+        .rest
+        .extend(gltf.rest.into_iter().filter(|r| !moved.contains(&r.0)));
     let mut scene = Scene {
         name,
         path: path.to_path_buf(),
@@ -199,7 +209,7 @@ fn objects(
     f: &SceneFile,
     material_index: &HashMap<String, usize>,
     base: &Path,
-) -> Result<Vec<Object>> {
+) -> Result<(Vec<Object>, super::skins::Loaded)> {
     let mut locals = Vec::new();
     let mut object_names: HashMap<String, usize> = HashMap::new();
     let mut skins = super::skins::Loaded::default();
@@ -230,7 +240,12 @@ fn objects(
                 if let Some(why) = assets::not_a_file(&p) {
                     bail!("{}: file {} {why}", key("mesh"), p.display());
                 }
-                MeshSource::Gltf(p)
+                let (gltf, warnings) = skins.load(i, &p)?;
+                if gltf.skin.is_some() {
+                    MeshSource::Gltf(p)
+                } else {
+                    MeshSource::GltfPart(super::gltf_objects::GltfPart::group(&p, warnings))
+                }
             }
             other => bail!(
                 "{}: expected one of {} or a path to an .obj, .glb or .gltf file, found \"{other}\"",
@@ -308,7 +323,7 @@ fn objects(
             );
         }
     }
-    Ok(objects)
+    Ok((objects, skins))
 }
 
 /// A path written in a scene file: relative to the file, unless it names a

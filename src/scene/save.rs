@@ -123,6 +123,7 @@ impl Scene {
                     t.insert("scale".into(), vec3(o.scale));
                     let mesh = match &o.mesh {
                         MeshSource::Obj(p) | MeshSource::Gltf(p) => path(p),
+                        MeshSource::GltfPart(part) => path(&part.path),
                         builtin => format!("{builtin:?}").to_lowercase().into(),
                     };
                     t.insert("mesh".into(), mesh);

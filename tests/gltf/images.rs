@@ -1,0 +1,1 @@
+//! Rendered glTF scenes against pixels predicted on the CPU.

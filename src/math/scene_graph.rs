@@ -55,7 +55,7 @@ mod tests {
         // A cycle ends; a long chain is linear (200,000 nodes).
         let g = chain_globals(&local[..2], &[Some(1), Some(0)]);
         assert!(g.iter().all(|m| m.is_finite()));
-        let n = 200_000;
+        let n: usize = 200_000;
         let parents: Vec<Option<usize>> = (0..n).map(|i| i.checked_sub(1)).collect();
         let g = chain_globals(&vec![t(1.0); n], &parents);
         assert_eq!(x(&g[n - 1]), n as f32);

@@ -16,7 +16,8 @@
 //! transform is the node's translation, rotation and scale; a node with a
 //! mesh draws its first triangle primitive, and each further primitive is
 //! a child object of it (`box/lid.1`, ...) at the same place. The entry's
-//! object and the nodes without a mesh draw nothing. A skinned file's
+//! object and the nodes without a mesh draw nothing; a node with nothing
+//! drawn at or below it (a skin's joints, an empty chain) is no object. A skinned file's
 //! entry object is the skin (src/scene/skins.rs), posed in the file's
 //! scene space, so the nodes above it stay in place. Node animations play
 //! through gloss's keyframe tracks (src/scene/animation.rs), at the
@@ -157,14 +158,30 @@ pub(super) fn expand(
                 .map_or_else(Default::default, |s| s.warnings.clone()),
         };
         let entry_name = objects[e].name.clone();
-        let mut node_object = vec![0usize; scene.nodes.len()];
-        for &i in &scene.order {
+        let prims_of = |i: usize| -> &[crate::geometry::GltfPrimitive] {
             let n = &scene.nodes[i];
-            let parent = n.parent.map_or(e, |p| node_object[p]);
-            let prims: &[crate::geometry::GltfPrimitive] = match n.mesh {
+            match n.mesh {
                 Some(m) if !n.skinned => &scene.meshes[m],
                 _ => &[],
-            };
+            }
+        };
+        // A node is an object when it or a node below it draws something
+        // (a skin's joints alone are posed by the skin).
+        let mut keep = vec![false; scene.nodes.len()];
+        for &i in scene.order.iter().rev() {
+            keep[i] |= !prims_of(i).is_empty();
+            if let (true, Some(p)) = (keep[i], scene.nodes[i].parent) {
+                keep[p] = true;
+            }
+        }
+        let mut node_object: Vec<Option<usize>> = vec![None; scene.nodes.len()];
+        for &i in &scene.order {
+            if !keep[i] {
+                continue;
+            }
+            let n = &scene.nodes[i];
+            let parent = n.parent.and_then(|p| node_object[p]).unwrap_or(e);
+            let prims = prims_of(i);
             let name = unique(&mut names, format!("{entry_name}/{}", n.name), i);
             let part = |k: usize| match prims.get(k) {
                 Some(p) => MeshSource::GltfPart(GltfPart {
@@ -177,7 +194,7 @@ pub(super) fn expand(
                 None => MeshSource::GltfPart(GltfPart::group(&path, warnings.clone())),
             };
             let material = prims.first().map_or(0, |p| material_of(p.material));
-            node_object[i] = objects.len();
+            node_object[i] = Some(objects.len());
             objects.push(object(name.clone(), part(0), material, Some(parent)));
             let o = objects.last_mut().unwrap();
             o.position = n.translation;
@@ -185,7 +202,7 @@ pub(super) fn expand(
             o.scale = n.scale;
             for (k, p) in prims.iter().enumerate().skip(1) {
                 let sub = unique(&mut names, format!("{name}.{k}"), i);
-                let parent = Some(node_object[i]);
+                let parent = node_object[i];
                 objects.push(object(sub, part(k), material_of(p.material), parent));
             }
         }
@@ -228,7 +245,7 @@ fn node_tracks(
     e: usize,
     file: &ObjectFile,
     scene: &GltfScene,
-    node_object: &[usize],
+    node_object: &[Option<usize>],
     objects: &[Object],
     anim: &mut GltfAnimation,
 ) -> Result<()> {
@@ -260,7 +277,7 @@ fn node_tracks(
     };
     let mut by_object: HashMap<usize, ObjectTracks> = HashMap::new();
     for ch in &c.channels {
-        let Some(&object) = node_object.get(ch.node) else {
+        let Some(&Some(object)) = node_object.get(ch.node) else {
             continue;
         };
         let t = by_object.entry(object).or_insert_with(|| ObjectTracks {

@@ -93,7 +93,7 @@ pub(super) fn object_skin(
         let gltf = matches!(mesh, MeshSource::GltfPart(_));
         if o.skinning.is_some() || (o.clip.is_some() && !gltf) {
             bail!(
-                "objects[{i}]: `skinning` is for a skinned mesh (a .glb or .gltf file with a skin) and `clip` for a glTF file, not mesh \"{}\"",
+                "objects[{i}]: `skinning` and `clip` are for a skinned mesh (a .glb or .gltf file; `clip` also plays a glTF file's node animations), not mesh \"{}\"",
                 o.mesh
             );
         }

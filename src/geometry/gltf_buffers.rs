@@ -12,8 +12,11 @@
 //! * Accessors: every accessor, before anything is read, lies inside its
 //!   buffer view, every view inside its buffer, a sparse accessor's index and
 //!   value views likewise, and all accessors together describe at most
-//!   [`MAX_ACCESSOR_BYTES`] (a sparse accessor without a buffer view reads
-//!   `count` zeros: a 2 KB file could otherwise ask for gigabytes).
+//!   [`MAX_ACCESSOR_BYTES`]. An accessor without a buffer view (zeros, or a
+//!   sparse accessor's base) is backed by no bytes at all, so those
+//!   together may describe at most [`UNBACKED_PER_BYTE`] times the bytes
+//!   of the file's buffers, plus [`UNBACKED_SLACK`]: a 2 KB file cannot ask
+//!   for gigabytes.
 
 use crate::assets;
 use anyhow::{Result, anyhow, bail};
@@ -23,6 +26,11 @@ use std::path::Path;
 pub const MAX_GLTF_BYTES: u64 = 64 * 1024 * 1024;
 /// The most bytes all the accessors of one file may describe together.
 pub const MAX_ACCESSOR_BYTES: u64 = 512 * 1024 * 1024;
+/// Accessors without a buffer view may describe this many bytes per byte
+/// of the file's buffers (a morph target's zeros match real positions)...
+pub const UNBACKED_PER_BYTE: u64 = 4;
+/// ... plus this many.
+pub const UNBACKED_SLACK: u64 = 1 << 16;
 /// The extensions gloss reads; any other in `extensionsRequired` is refused.
 pub const SUPPORTED_EXTENSIONS: &[&str] = &["KHR_texture_transform"];
 
@@ -184,6 +192,9 @@ fn check_accessors(doc: &gltf::Gltf, buffers: &[Vec<u8>], name: &str) -> Result<
         Ok(())
     };
     let mut total: u64 = 0;
+    let backing: u64 = buffers.iter().map(|b| b.len() as u64).sum();
+    let unbacked_limit = backing.saturating_mul(UNBACKED_PER_BYTE) + UNBACKED_SLACK;
+    let mut unbacked: u64 = 0;
     for a in doc.accessors() {
         let what = format!("accessors[{}]", a.index());
         let (count, size) = (a.count() as u64, a.size() as u64);
@@ -194,8 +205,16 @@ fn check_accessors(doc: &gltf::Gltf, buffers: &[Vec<u8>], name: &str) -> Result<
                 "{name}: {what}: count {count} of {size}-byte items takes the file's accessors past {MAX_ACCESSOR_BYTES} bytes, the limit"
             );
         }
-        if let Some(v) = a.view() {
-            inside(&v, a.offset(), count, size, &what)?;
+        match a.view() {
+            Some(v) => inside(&v, a.offset(), count, size, &what)?,
+            None => {
+                unbacked = unbacked.saturating_add(bytes);
+                if unbacked > unbacked_limit {
+                    bail!(
+                        "{name}: {what}: count {count} of {size}-byte items without a bufferView: accessors without one may describe {unbacked_limit} bytes in this file ({UNBACKED_PER_BYTE} per byte of its buffers + {UNBACKED_SLACK}), the limit"
+                    );
+                }
+            }
         }
         if let Some(s) = a.sparse() {
             let n = s.count() as u64;

@@ -69,6 +69,19 @@ fn a_sparse_accessor_without_a_view_cannot_ask_for_gigabytes() {
     // A user's run, memory capped: a clear error, no abort.
     let (ok, stderr) = plan_capped(&dir("sparse"));
     assert!(!ok && stderr.contains("accessors[4]"), "{stderr}");
+    // Below the overall limit, zeros are still bounded by the file's bytes:
+    // a million VEC3 (12 MB) from a file of about 2 KB.
+    let mut b = with_cube();
+    let zeros = b.raw_accessor(r#"{"componentType":5126,"count":1000000,"type":"VEC3"}"#);
+    let mesh = b.primitives(&format!(
+        r#"[{{"attributes":{{"POSITION":0,"NORMAL":{zeros}}}}}]"#
+    ));
+    b.nodes.push(format!(r#"{{"mesh":{mesh}}}"#));
+    refused(
+        "unbacked",
+        &b,
+        &["accessors[4]", "without a bufferView", "the limit"],
+    );
     // Animation times and inverse bind matrices are counted as well: the
     // same accessor as key times.
     let mut b = with_cube();

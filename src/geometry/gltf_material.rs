@@ -106,6 +106,12 @@ pub fn material(
         Ok(v)
     };
     let c = pbr.base_color_factor();
+    let tinted = c[0] != c[1] || c[1] != c[2] || pbr.base_color_texture().is_some();
+    if pbr.metallic_factor() > 0.0 && tinted {
+        dropped.insert(format!(
+            "{label}: the metal's tint (gloss's highlights are white; F0 takes the base colour's luminance)"
+        ));
+    }
     for (k, v) in ["r", "g", "b", "a"].iter().zip(c) {
         check(&format!("baseColorFactor.{k}"), v)?;
     }

@@ -220,3 +220,24 @@ fn forward_and_every_deferred_path_agree_on_a_gltf_scene() {
     }
     let _ = Mat4::IDENTITY;
 }
+
+#[test]
+fn every_path_agrees_with_forward_on_the_shipped_gltf_scene() {
+    let base = common::scene("gltf-scene.toml");
+    let bound = Tolerance {
+        threshold: 1.0 / 255.0,
+        max_frac_over: 0.005,
+        max_abs: Some(6.0 / 255.0),
+    };
+    let mut fwd = base.clone();
+    fwd.render.path = RenderPath::Forward;
+    let ctx = common::context(common::backend());
+    let reference = common::render_with(&ctx, &fwd, Output::Srgb8).image;
+    for &path in RenderPath::ALL {
+        let mut s = base.clone();
+        s.render.path = path;
+        let img = common::render_with(&ctx, &s, Output::Srgb8).image;
+        let m = common::assert_close(&format!("gltf-scene-{path:?}"), &img, &reference, &bound);
+        eprintln!("gltf-scene {path:?} vs forward: {m}");
+    }
+}

@@ -283,3 +283,39 @@ fn the_materials_map_as_docs_gltf_md_says() {
     .unwrap();
     assert_eq!(over.materials[over.objects[1].material].name, "mine");
 }
+
+#[test]
+fn the_shipped_walker_stands_upright_and_walks() {
+    // Authored z-up under a turned armature, as exporters write figures.
+    let s = load_gltf_scene(&crate::common::root().join("scenes/assets/walker.glb")).unwrap();
+    let (skin, _) = s.skin.as_ref().unwrap();
+    let clip = skin.clip("walk");
+    let size = |t: f32| {
+        let posed = skin.skinned(&skin.joint_matrices(clip, t), false);
+        let p: Vec<Vec3> = posed
+            .vertices
+            .iter()
+            .map(|v| Vec3::from(v.position))
+            .collect();
+        let (lo, hi) = bounds(&p);
+        (lo, hi - lo)
+    };
+    for t in [0.0, 0.25, 0.5] {
+        let (lo, size) = size(t);
+        assert!(
+            size.y > 1.8 && size.y > 2.0 * size.x.max(size.z),
+            "t = {t}: {size}"
+        );
+        assert!(
+            lo.y.abs() < 0.1,
+            "t = {t}: the feet are on the ground ({lo})"
+        );
+    }
+    // Mid-stride the legs spread along z (forward), at a quarter they pass.
+    assert!(
+        size(0.0).1.z > size(0.25).1.z + 0.2,
+        "{} {}",
+        size(0.0).1,
+        size(0.25).1
+    );
+}

@@ -225,7 +225,7 @@ pub fn skin_of(
         weights.push(weights[source]);
     }
 
-    let nodes = read_nodes(&file, name)?;
+    let nodes = read_nodes(file, name)?;
     let inverse_bind: Vec<Mat4> = match skin.reader(get.clone()).read_inverse_bind_matrices() {
         Some(m) => m.map(|c| Mat4::from_cols_array_2d(&c)).collect(),
         None => vec![Mat4::IDENTITY; joint_count],
@@ -244,7 +244,7 @@ pub fn skin_of(
             skin.index()
         );
     }
-    let clips = read_clips(&file, name, &get, &mut warnings)?;
+    let clips = read_clips(file, name, &get, &mut warnings)?;
     // Every node index in range, so that posing can index without checks
     // (the crate validates them; this holds even if it did not).
     let in_range = |n: usize| n < nodes.len();

@@ -80,9 +80,9 @@ fn scene_file() -> &'static str {
         use gloss::geometry::{GltfBuilder, cube};
         let mut b = GltfBuilder::default();
         let mesh = b.mesh(&cube(), Some(0));
-        let strip = b.primitives(&format!(
-            r#"[{{"attributes":{{"POSITION":0}},"mode":5,"material":1}},{{"attributes":{{"POSITION":0}},"mode":6}}]"#
-        ));
+        let strip = b.primitives(
+            r#"[{"attributes":{"POSITION":0},"mode":5,"material":1},{"attributes":{"POSITION":0},"mode":6}]"#,
+        );
         let sparse = b.raw_accessor(
             r#"{"bufferView":0,"componentType":5126,"count":24,"type":"VEC3","min":[-1,-1,-1],"max":[1,1,1],"sparse":{"count":2,"indices":{"bufferView":3,"componentType":5125},"values":{"bufferView":0}}}"#,
         );
@@ -93,9 +93,10 @@ fn scene_file() -> &'static str {
         b.textures.push(r#"{"source":0,"sampler":0}"#.into());
         b.images.push(r#"{"uri":"missing.png"}"#.into());
         b.samplers.push(r#"{"magFilter":9728,"minFilter":9987,"wrapS":33648}"#.into());
-        b.nodes.push(format!(
-            r#"{{"name":"a","translation":[1,2,3],"rotation":[0,0.6,0,0.8],"scale":[2,2,2],"children":[1,2]}}"#
-        ));
+        b.nodes.push(
+            r#"{"name":"a","translation":[1,2,3],"rotation":[0,0.6,0,0.8],"scale":[2,2,2],"children":[1,2]}"#
+                .to_string(),
+        );
         b.nodes.push(format!(r#"{{"name":"b","mesh":{mesh},"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0.5,0,0,1]}}"#));
         b.nodes.push(format!(r#"{{"name":"c","mesh":{strip},"children":[3]}}"#));
         b.nodes.push(format!(r#"{{"name":"d","mesh":{sparse_mesh}}}"#));

@@ -43,7 +43,7 @@ pub const MAX_GLTF_OBJECTS: usize = 400_000;
 /// One primitive of a glTF file (`mesh`, `primitive`), or a node that draws
 /// nothing (`mesh == GltfPart::GROUP`). Equal and hashed by file, mesh and
 /// primitive: the draw list uploads each once.
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct GltfPart {
     pub path: PathBuf,
     pub mesh: usize,
@@ -75,6 +75,21 @@ impl GltfPart {
                 colors: Vec::new(),
             }),
             warnings,
+        }
+    }
+}
+
+/// The file and the part, never the triangles (messages quote it).
+impl std::fmt::Debug for GltfPart {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        match self.mesh {
+            GltfPart::GROUP => write!(f, "{} (a node)", self.path.display()),
+            m => write!(
+                f,
+                "{} mesh {m} primitive {}",
+                self.path.display(),
+                self.primitive
+            ),
         }
     }
 }

@@ -19,7 +19,7 @@ pub mod camera_limits;
 pub mod clip_planes;
 mod file;
 pub mod fxaa;
-mod gltf_material;
+pub mod gltf_material;
 pub mod gltf_objects;
 pub mod knobs;
 mod light_grid;

@@ -72,7 +72,9 @@ fn a_sparse_accessor_without_a_view_cannot_ask_for_gigabytes() {
     // Below the overall limit, zeros are still bounded by the file's bytes:
     // a million VEC3 (12 MB) from a file of about 2 KB.
     let mut b = with_cube();
-    let zeros = b.raw_accessor(r#"{"componentType":5126,"count":1000000,"type":"VEC3"}"#);
+    let zeros = b.raw_accessor(
+        r#"{"componentType":5126,"count":1000000,"type":"VEC3","sparse":{"count":1,"indices":{"bufferView":0,"componentType":5125},"values":{"bufferView":0}}}"#,
+    );
     let mesh = b.primitives(&format!(
         r#"[{{"attributes":{{"POSITION":0,"NORMAL":{zeros}}}}}]"#
     ));

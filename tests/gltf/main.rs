@@ -10,4 +10,5 @@ mod common;
 mod files;
 mod hostile;
 mod images;
+mod materials;
 mod reader;

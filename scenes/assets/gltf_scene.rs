@@ -9,7 +9,7 @@
 //!   the clip "walk" swings the legs and bobs the pelvis, one stride a
 //!   second, looping.
 //! * `showcase.gltf`: three spheres in glTF's metallic-roughness model
-//!   (gold metal, red plastic, half-metal grey), a grass card whose
+//!   (steel, red plastic, half-metal grey), a grass card whose
 //!   texture's alpha cuts its blades out (alphaMode MASK, grass.png), and
 //!   a box that spins about y (the "spin" animation, as the Khronos
 //!   BoxAnimated sample does), written by `gloss::geometry::GltfBuilder`
@@ -165,7 +165,7 @@ pub fn showcase() -> String {
     let mut b = GltfBuilder::default();
     let sphere = uv_sphere(16, 32);
     let materials = [
-        r#"{"name":"gold","pbrMetallicRoughness":{"baseColorFactor":[1.0,0.77,0.34,1],"metallicFactor":1.0,"roughnessFactor":0.35}}"#,
+        r#"{"name":"steel","pbrMetallicRoughness":{"baseColorFactor":[0.9,0.9,0.9,1],"metallicFactor":1.0,"roughnessFactor":0.35}}"#,
         r#"{"name":"red plastic","pbrMetallicRoughness":{"baseColorFactor":[0.7,0.06,0.04,1],"metallicFactor":0.0,"roughnessFactor":0.45}}"#,
         r#"{"name":"grey","pbrMetallicRoughness":{"baseColorFactor":[0.6,0.6,0.6,1],"metallicFactor":0.5,"roughnessFactor":0.8}}"#,
         r#"{"name":"grass","alphaMode":"MASK","alphaCutoff":0.5,"doubleSided":true,"pbrMetallicRoughness":{"baseColorTexture":{"index":0},"metallicFactor":0.0,"roughnessFactor":0.9}}"#,

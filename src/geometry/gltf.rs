@@ -326,13 +326,13 @@ pub(super) fn read_clips<'s>(
                 ReadOutputs::Translations(v) => ChannelTrack::Translation(Track::new(
                     &what,
                     times,
-                    v.map(Vec3::from).collect(),
+                    within_world(&what, "translation", v)?,
                     interpolation,
                 )?),
                 ReadOutputs::Scales(v) => ChannelTrack::Scale(Track::new(
                     &what,
                     times,
-                    v.map(Vec3::from).collect(),
+                    within_world(&what, "scale", v)?,
                     interpolation,
                 )?),
                 ReadOutputs::Rotations(v) => ChannelTrack::Rotation(Track::new(
@@ -374,6 +374,20 @@ fn rotations(what: &str, keys: impl Iterator<Item = [f32; 4]>) -> Result<Vec<Qua
                 );
             }
             Ok(q.normalize())
+        })
+        .collect()
+}
+
+/// Translation or scale keys, each within the world limit (1e9).
+fn within_world(what: &str, kind: &str, keys: impl Iterator<Item = [f32; 3]>) -> Result<Vec<Vec3>> {
+    let limit = super::gltf_scene::MAX_GLTF_VALUE;
+    keys.enumerate()
+        .map(|(k, v)| {
+            let v = Vec3::from(v);
+            if !(v.is_finite() && v.abs().max_element() <= limit) {
+                bail!("{what}: {kind} key {k} is {v}, past gloss's world limit of {limit:e}");
+            }
+            Ok(v)
         })
         .collect()
 }

@@ -189,6 +189,22 @@ fn a_translation_past_the_world_limit_is_refused() {
         r#","mesh":0"#,
     );
     refused("far", &b, &["nodes[0].translation", "world limit of 1e9"]);
+    // In translation keys as well.
+    let mut b = crate::reader::spinning_box();
+    let t = b.floats(&[0.0], 1, "SCALAR");
+    let far = b.floats(&[0.0, 5e9, 0.0], 3, "VEC3");
+    b.animations.push(format!(
+        r#"{{"name":"away","channels":[{{"sampler":0,"target":{{"node":0,"path":"translation"}}}}],"samplers":[{{"input":{t},"output":{far}}}]}}"#
+    ));
+    refused(
+        "far-key",
+        &b,
+        &[
+            "animation 'away'",
+            "translation key 0",
+            "world limit of 1e9",
+        ],
+    );
 }
 
 #[test]

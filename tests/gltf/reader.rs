@@ -319,3 +319,40 @@ fn the_shipped_walker_stands_upright_and_walks() {
         size(0.25).1
     );
 }
+
+#[test]
+fn samplers_and_texture_transforms_become_the_materials_texturing() {
+    use gloss::scene::texturing::{TextureFilter, Wrap};
+    let d = crate::files::folder("transform");
+    image::RgbaImage::new(2, 2).save(d.join("t.png")).unwrap();
+    let mut b = GltfBuilder::default();
+    let mesh = b.mesh(&plane(2.0, 2.0, 1), Some(0));
+    b.materials.push(r#"{"pbrMetallicRoughness":{"metallicFactor":0,"baseColorTexture":{"index":0,"extensions":{"KHR_texture_transform":{"offset":[0.25,0.5],"scale":[2,3]}}}}}"#.into());
+    b.textures.push(r#"{"source":0,"sampler":0}"#.into());
+    b.images.push(r#"{"uri":"t.png"}"#.into());
+    b.samplers
+        .push(r#"{"magFilter":9729,"minFilter":9985,"wrapS":33648,"wrapT":33071}"#.into());
+    b.nodes.push(format!(r#"{{"mesh":{mesh}}}"#));
+    b.extra.push(r#""extensionsUsed":["KHR_texture_transform"],"extensionsRequired":["KHR_texture_transform"]"#.into());
+    std::fs::write(d.join("model.gltf"), b.gltf()).unwrap();
+    std::fs::write(d.join("scene.toml"), crate::files::scene_text("")).unwrap();
+    let s = gloss::scene::Scene::load(&d.join("scene.toml")).unwrap();
+    let m = &s.materials[s.objects[1].material];
+    assert_eq!(
+        m.diffuse_texture.as_deref(),
+        Some(d.join("t.png").as_path())
+    );
+    let t = m.texturing;
+    assert_eq!(t.wrap, [Wrap::Mirror, Wrap::Clamp]);
+    assert_eq!(t.filter, TextureFilter::BilinearMip);
+    // glTF's v' = v s + o, in gloss's flipped v: v' = v s + (1 - s - o).
+    assert_eq!(t.uv_scale, [2.0, 3.0]);
+    assert_eq!(t.uv_offset, [0.25, 1.0 - 3.0 - 0.5]);
+    // The same uv both ways: a glTF uv (0.1, 0.2) lands where gloss's does.
+    let (u, v) = (0.1f32, 0.2f32);
+    let gltf_v = v * 3.0 + 0.5;
+    let gloss_v = (1.0 - v) * t.uv_scale[1] + t.uv_offset[1];
+    assert!((gloss_v - (1.0 - gltf_v)).abs() < 1e-6);
+    assert_eq!(u * 2.0 + 0.25, u * t.uv_scale[0] + t.uv_offset[0]);
+    assert!(s.warnings().is_empty(), "{:?}", s.warnings());
+}

@@ -35,7 +35,10 @@
 //!   with a horizon (`skybox.rs` says how);
 //!
 //! * `arm.glb`: a skinned arm, three joints and two clips, as binary glTF
-//!   2.0 (`arm.rs` says how it is built).
+//!   2.0 (`arm.rs` says how it is built);
+//! * `walker.glb`, `showcase.gltf`: the glTF scene's walking figure and its
+//!   metallic-roughness spheres, grass card and spinning box
+//!   (`gltf_scene.rs`).
 //!
 //! * `models/`: the model-loading scenes' OBJ + MTL files and textures,
 //!   JPEGs among them (`models.rs` says what each holds).
@@ -51,6 +54,7 @@ use std::path::{Path, PathBuf};
 mod arm;
 mod atlas;
 mod bunny;
+mod gltf_scene;
 mod model_textures;
 mod models;
 mod skybox;
@@ -125,6 +129,10 @@ fn main() -> Result<()> {
         .with_context(|| format!("writing {}", glb.display()))?;
     println!("wrote {}", glb.display());
     models::write_all(&dir)?;
+    let walker = dir.join("walker.glb");
+    std::fs::write(&walker, geometry::write_glb(&gltf_scene::walker()))
+        .with_context(|| format!("writing {}", walker.display()))?;
+    write_text(&dir.join("showcase.gltf"), &gltf_scene::showcase())?;
     Ok(())
 }
 

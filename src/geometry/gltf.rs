@@ -9,11 +9,15 @@
 //! mesh, a primitive that is not triangles or lacks POSITION, JOINTS_0 or
 //! WEIGHTS_0, a joint index out of range, NaN or infinite numbers, a vertex
 //! whose weights are all zero (naming the mesh and the vertex), a node with
-//! two parents, buffers as data: URIs, and CUBICSPLINE animation samplers
+//! two parents, a zero quaternion, an inverse bind matrix past the world
+//! limit, and CUBICSPLINE animation samplers
 //! (gloss's cubic keys are Catmull-Rom; a clip with explicit tangents is
 //! refused rather than played differently). Weights that do not sum to 1
-//! are scaled so that they do, and the returned warnings say so.
+//! are scaled so that they do, and the returned warnings say so. Buffers
+//! (the .glb chunk, data: URIs, files) and every accessor's count are
+//! checked first, in `gltf_buffers`.
 
+use super::gltf_buffers::Parsed;
 use super::skin::{Channel, ChannelTrack, Clip, SkinNode, SkinnedMesh};
 use super::{MeshData, Vertex, compute_normals, compute_tangents};
 use crate::assets;
@@ -24,8 +28,7 @@ use glam::{Mat4, Quat, Vec3};
 use gltf::animation::util::ReadOutputs;
 use std::path::Path;
 
-/// Largest glTF file (and each of its .bin buffers) `load_gltf` reads.
-pub const MAX_GLTF_BYTES: u64 = 64 * 1024 * 1024;
+pub use super::gltf_buffers::MAX_GLTF_BYTES;
 /// Most vertices `load_gltf` accepts in the skinned mesh.
 pub const MAX_GLTF_VERTICES: usize = 16_000_000;
 
@@ -55,7 +58,7 @@ thread_local! {
 
 /// catch_unwind, with the panic hook silent on this thread meanwhile (the
 /// hook stays as it was for every other panic, on every thread).
-fn quietly<T>(f: impl FnOnce() -> T + std::panic::UnwindSafe) -> std::thread::Result<T> {
+pub(super) fn quietly<T>(f: impl FnOnce() -> T + std::panic::UnwindSafe) -> std::thread::Result<T> {
     static HOOK: std::sync::Once = std::sync::Once::new();
     HOOK.call_once(|| {
         let previous = std::panic::take_hook();
@@ -73,43 +76,28 @@ fn quietly<T>(f: impl FnOnce() -> T + std::panic::UnwindSafe) -> std::thread::Re
 
 /// `load_gltf` on bytes already read; `path` locates external buffers.
 pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<String>)> {
-    let file =
-        gltf::Gltf::from_slice(bytes).map_err(|e| anyhow!("malformed glTF file {name}: {e}"))?;
-    let mut warnings = Vec::new();
-    let mut buffers: Vec<Vec<u8>> = Vec::new();
-    for b in file.buffers() {
-        let data = match b.source() {
-            gltf::buffer::Source::Bin => file.blob.clone().ok_or_else(|| {
-                anyhow!(
-                    "glTF file {name}: buffer {} is the binary chunk, which the file lacks",
-                    b.index()
-                )
-            })?,
-            gltf::buffer::Source::Uri(uri) if uri.starts_with("data:") => bail!(
-                "glTF file {name}: buffer {} is a data: URI, which gloss does not read; write a .glb",
-                b.index()
-            ),
-            gltf::buffer::Source::Uri(uri) => {
-                let at = path.parent().unwrap_or(Path::new("")).join(uri);
-                assets::read(&at, MAX_GLTF_BYTES, "glTF buffer")?.into_owned()
-            }
-        };
-        if data.len() < b.length() {
-            bail!(
-                "glTF file {name}: buffer {} holds {} bytes but says it has {}",
-                b.index(),
-                data.len(),
-                b.length()
-            );
-        }
-        buffers.push(data);
-    }
-    let get = |b: gltf::Buffer| buffers.get(b.index()).map(|d| d.as_slice());
-
-    let node = file
+    let parsed =
+        super::gltf_buffers::parse(bytes, path, name).map_err(|e| anyhow!("glTF file {e:#}"))?;
+    let node = parsed
+        .doc
         .nodes()
         .find(|n| n.mesh().is_some() && n.skin().is_some())
-        .ok_or_else(|| anyhow!("glTF file {name} has no skinned mesh (no node with both a mesh and a skin); gloss reads static meshes from OBJ files"))?;
+        .ok_or_else(|| {
+            anyhow!("glTF file {name} has no skinned mesh (no node with both a mesh and a skin)")
+        })?;
+    skin_of(&parsed, &node, name)
+}
+
+/// The skin of `node` (it has a mesh and a skin) in a parsed file, with
+/// the whole node tree and every animation.
+pub fn skin_of(
+    parsed: &Parsed,
+    node: &gltf::Node,
+    name: &str,
+) -> Result<(SkinnedMesh, Vec<String>)> {
+    let file = &parsed.doc;
+    let get = parsed.get();
+    let mut warnings = Vec::new();
     let (mesh, skin) = (node.mesh().unwrap(), node.skin().unwrap());
     let mesh_name = mesh
         .name()
@@ -137,7 +125,7 @@ pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<S
         if data.vertices.len() + count > MAX_GLTF_VERTICES {
             bail!("glTF file {name} is too large: more than {MAX_GLTF_VERTICES} vertices");
         }
-        let r = prim.reader(get);
+        let r = prim.reader(get.clone());
         let missing = |attr: &str| anyhow!("{what} has no {attr} (or it lies outside its buffer)");
         let positions: Vec<[f32; 3]> = r
             .read_positions()
@@ -237,8 +225,8 @@ pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<S
         weights.push(weights[source]);
     }
 
-    let nodes = read_nodes(&file, name)?;
-    let inverse_bind: Vec<Mat4> = match skin.reader(get).read_inverse_bind_matrices() {
+    let nodes = read_nodes(file, name)?;
+    let inverse_bind: Vec<Mat4> = match skin.reader(get.clone()).read_inverse_bind_matrices() {
         Some(m) => m.map(|c| Mat4::from_cols_array_2d(&c)).collect(),
         None => vec![Mat4::IDENTITY; joint_count],
     };
@@ -247,7 +235,16 @@ pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<S
             "glTF file {name}: the skin's inverse bind matrices are not {joint_count} finite matrices"
         );
     }
-    let clips = read_clips(&file, name, &get, &mut warnings)?;
+    let limit = super::gltf_scene::MAX_GLTF_VALUE;
+    if let Some(j) =
+        (inverse_bind.iter()).position(|m| m.abs().to_cols_array().iter().any(|x| *x > limit))
+    {
+        bail!(
+            "glTF file {name}: skins[{}].inverseBindMatrices[{j}] has an entry past gloss's world limit of {limit:e}",
+            skin.index()
+        );
+    }
+    let clips = read_clips(file, name, &get, &mut warnings)?;
     // Every node index in range, so that posing can index without checks
     // (the crate validates them; this holds even if it did not).
     let in_range = |n: usize| n < nodes.len();
@@ -274,58 +271,26 @@ pub fn read(bytes: &[u8], path: &Path, name: &str) -> Result<(SkinnedMesh, Vec<S
         mesh_node: node.index(),
         clips,
     };
-    if !skinned.node_globals(None, 0.0)[skinned.mesh_node].is_finite()
-        || skinned.node_globals(None, 0.0)[skinned.mesh_node].determinant() == 0.0
-    {
-        bail!("glTF file {name}: the mesh node's transform is singular");
-    }
     Ok((skinned, warnings))
 }
 
 /// Every node's rest transform and parent; a node with two parents, or a
 /// cycle, is an error.
 fn read_nodes(file: &gltf::Gltf, name: &str) -> Result<Vec<SkinNode>> {
-    let mut nodes: Vec<SkinNode> = (file.nodes())
-        .map(|n| {
-            let (t, r, s) = n.transform().decomposed();
-            SkinNode {
-                name: n
-                    .name()
-                    .map_or(format!("node {}", n.index()), str::to_owned),
-                parent: None,
-                translation: Vec3::from(t),
-                rotation: Quat::from_array(r),
-                scale: Vec3::from(s),
-            }
+    let (nodes, _) = super::gltf_scene::read_nodes(file, name)?;
+    Ok(nodes
+        .into_iter()
+        .map(|n| SkinNode {
+            name: n.name,
+            parent: n.parent,
+            translation: n.translation,
+            rotation: n.rotation,
+            scale: n.scale,
         })
-        .collect();
-    for n in file.nodes() {
-        for c in n.children() {
-            if nodes[c.index()].parent.replace(n.index()).is_some() {
-                bail!("glTF file {name}: node {} has two parents", c.index());
-            }
-        }
-    }
-    for (i, n) in nodes.iter().enumerate() {
-        if !(n.translation.is_finite() && n.rotation.is_finite() && n.scale.is_finite()) {
-            bail!("glTF file {name}: node {i}'s transform is not finite");
-        }
-        let mut up = n.parent;
-        for _ in 0..=nodes.len() {
-            match up {
-                None => break,
-                Some(p) if p == i => bail!("glTF file {name}: node {i} is its own ancestor"),
-                Some(p) => up = nodes[p].parent,
-            }
-        }
-    }
-    for n in &mut nodes {
-        n.rotation = n.rotation.normalize();
-    }
-    Ok(nodes)
+        .collect())
 }
 
-fn read_clips<'s>(
+pub(super) fn read_clips<'s>(
     file: &gltf::Gltf,
     name: &str,
     get: &(impl Fn(gltf::Buffer) -> Option<&'s [u8]> + Clone),
@@ -361,21 +326,19 @@ fn read_clips<'s>(
                 ReadOutputs::Translations(v) => ChannelTrack::Translation(Track::new(
                     &what,
                     times,
-                    v.map(Vec3::from).collect(),
+                    within_world(&what, "translation", v)?,
                     interpolation,
                 )?),
                 ReadOutputs::Scales(v) => ChannelTrack::Scale(Track::new(
                     &what,
                     times,
-                    v.map(Vec3::from).collect(),
+                    within_world(&what, "scale", v)?,
                     interpolation,
                 )?),
                 ReadOutputs::Rotations(v) => ChannelTrack::Rotation(Track::new(
                     &what,
                     times,
-                    v.into_f32()
-                        .map(|q| Quat::from_array(q).normalize())
-                        .collect(),
+                    rotations(&what, v.into_f32())?,
                     interpolation,
                 )?),
                 ReadOutputs::MorphTargetWeights(_) => {
@@ -398,3 +361,33 @@ fn read_clips<'s>(
 
 #[cfg(test)]
 mod tests;
+
+/// Rotation keys as unit quaternions; a zero quaternion (no rotation at
+/// all, NaN once normalised) is an error naming the key.
+fn rotations(what: &str, keys: impl Iterator<Item = [f32; 4]>) -> Result<Vec<Quat>> {
+    keys.enumerate()
+        .map(|(k, q)| {
+            let q = Quat::from_array(q);
+            if !q.is_finite() || q.length_squared() < 1e-12 {
+                bail!(
+                    "{what}: rotation key {k} is {q}, not a rotation (the identity is [0, 0, 0, 1])"
+                );
+            }
+            Ok(q.normalize())
+        })
+        .collect()
+}
+
+/// Translation or scale keys, each within the world limit (1e9).
+fn within_world(what: &str, kind: &str, keys: impl Iterator<Item = [f32; 3]>) -> Result<Vec<Vec3>> {
+    let limit = super::gltf_scene::MAX_GLTF_VALUE;
+    keys.enumerate()
+        .map(|(k, v)| {
+            let v = Vec3::from(v);
+            if !(v.is_finite() && v.abs().max_element() <= limit) {
+                bail!("{what}: {kind} key {k} is {v}, past gloss's world limit of {limit:e}");
+            }
+            Ok(v)
+        })
+        .collect()
+}

@@ -14,7 +14,10 @@
 //! * `mtl`: the MTL files an OBJ names, mapped onto gloss's material terms;
 //! * `polygons`: faces of more than three corners, ear-clipped;
 //! * `skin`: skinned meshes (notes 01 §7.1): skin, skeleton, clips, posing;
-//! * `gltf`, `gltf_write`: skinned meshes read from and written to glTF 2.0.
+//! * `gltf`, `gltf_write`: skinned meshes read from and written to glTF 2.0;
+//! * `gltf_scene`, `gltf_material`, `gltf_buffers`: a whole glTF 2.0 scene
+//!   (nodes, triangle primitives, materials, animations), and its bytes
+//!   and counts checked before anything is read.
 //!
 //! Every public function is re-exported here: use `crate::geometry::cube`,
 //! not the file it lives in.
@@ -32,6 +35,10 @@
 //!   Every procedural mesh has w = +1.
 
 mod gltf;
+mod gltf_buffers;
+mod gltf_build;
+mod gltf_material;
+mod gltf_scene;
 mod gltf_write;
 mod mtl;
 mod normals;
@@ -43,6 +50,13 @@ mod tangents;
 mod volumes;
 
 pub use gltf::{MAX_GLTF_BYTES, MAX_GLTF_VERTICES, load_gltf};
+pub use gltf_buffers::{MAX_ACCESSOR_BYTES, SUPPORTED_EXTENSIONS};
+pub use gltf_build::GltfBuilder;
+pub use gltf_material::{AlphaMode, GltfMaterial, GltfTexture};
+pub use gltf_scene::{
+    GltfNode, GltfPrimitive, GltfScene, MAX_GLTF_NODES, MAX_GLTF_VALUE, load_gltf_scene,
+    read_scene, triangles,
+};
 pub use gltf_write::write_glb;
 pub use mtl::{MAX_MTL_BYTES, MAX_MTL_MATERIALS, MtlMaterial, load_mtl, parse_mtl};
 pub use normals::compute_normals;

@@ -6,15 +6,18 @@
 //! (`math::skinning`) skins the same vertices with the same joint matrices.
 //!
 //! A joint's matrix, what the notes call its transform t, takes a vertex
-//! from the bind pose to the posed skin, both in the mesh's own space:
+//! from the bind pose to the posed skin in the file's scene space:
 //!
 //! ```text
-//! t_j = inverse(global(mesh node)) * global(joint node j) * inverse_bind_j
+//! t_j = global(joint node j) * inverse_bind_j
 //! ```
 //!
 //! (the glTF 2.0 specification, §3.7.3.3 "Joint Hierarchy"): the inverse
 //! bind matrix takes the vertex into the joint's space as it was bound, the
-//! joint's posed global transform takes it back out where the joint now is.
+//! joint's posed global transform takes it back out where the joint now is,
+//! with every node above the joints in place (the mesh node's own
+//! transform is not applied: "only the joint transforms are applied to the
+//! skinned mesh"). The object's model matrix then places the file's scene.
 
 use crate::geometry::MeshData;
 use crate::math::keyframes::Track;
@@ -109,27 +112,15 @@ impl SkinnedMesh {
         let local: Vec<Mat4> = (local.iter())
             .map(|&(t, r, s)| Mat4::from_scale_rotation_translation(s, r, t))
             .collect();
-        (0..self.nodes.len())
-            .map(|i| {
-                let mut m = local[i];
-                let mut up = self.nodes[i].parent;
-                // The loader refused cycles; the bound keeps any tree finite.
-                for _ in 0..self.nodes.len() {
-                    let Some(p) = up else { break };
-                    m = local[p] * m;
-                    up = self.nodes[p].parent;
-                }
-                m
-            })
-            .collect()
+        let parents: Vec<Option<usize>> = self.nodes.iter().map(|n| n.parent).collect();
+        crate::math::chain_globals(&local, &parents)
     }
 
     /// Each joint's matrix t_j at `time` in `clip` (see the module comment).
     pub fn joint_matrices(&self, clip: Option<usize>, time: f32) -> Vec<Mat4> {
         let g = self.node_globals(clip, time);
-        let to_mesh = g[self.mesh_node].inverse();
         (self.joint_nodes.iter().zip(&self.inverse_bind))
-            .map(|(&node, ib)| to_mesh * g[node] * *ib)
+            .map(|(&node, ib)| g[node] * *ib)
             .collect()
     }
 

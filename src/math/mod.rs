@@ -28,6 +28,8 @@
 //! z, y→z about x, z→x about y), as glam's `Mat4::from_rotation_*` do.
 
 pub mod reflection;
+mod scene_graph;
+pub use scene_graph::chain_globals;
 pub mod shadow;
 
 use glam::{Mat3, Mat4, Vec3, Vec4};

@@ -287,9 +287,15 @@ impl Scene {
             bail!("animation time: expected a finite number of seconds, found {time}");
         }
         self.animation.time = time;
+        // Each object's tracks, gathered once: linear in the tracks (a
+        // glTF file can animate a great many nodes).
+        let mut by_object: std::collections::HashMap<usize, Vec<&ObjectTracks>> =
+            Default::default();
+        for t in &self.animation.tracks {
+            by_object.entry(t.object).or_default().push(t);
+        }
         for &(object, rest) in &self.animation.rest {
-            let samples: Vec<Sample> = (self.animation.tracks.iter())
-                .filter(|t| t.object == object)
+            let samples: Vec<Sample> = (by_object.get(&object).into_iter().flatten())
                 .map(|t| Sample {
                     weight: t.weight,
                     position: t.position.as_ref().map(|p| p.sample(time)),

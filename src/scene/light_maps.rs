@@ -23,8 +23,10 @@ pub(super) fn light_map(
 ) -> Result<Option<LightMapSettings>> {
     Ok(match file {
         None => None,
-        Some(_) if matches!(mesh, MeshSource::Gltf(_)) => {
-            bail!("objects[{i}].light_map: a skinned mesh moves; its light cannot be baked once")
+        Some(_) if matches!(mesh, MeshSource::Gltf(_) | MeshSource::GltfPart(_)) => {
+            bail!(
+                "objects[{i}].light_map: a glTF file's meshes are not light-mapped (a skin moves, and its nodes are objects of their own); bake built-in or OBJ meshes"
+            )
         }
         Some(l) if !(1..=MAX_LIGHT_MAP).contains(&l.size) => bail!(
             "objects[{i}].light_map.size: expected 1..={MAX_LIGHT_MAP} texels a side, found {}",

@@ -36,6 +36,8 @@ pub fn mesh_data(source: &MeshSource) -> Result<MeshData> {
         // The skin in its bind pose: the draw list poses it (each object
         // its own way), from `Object::skin`.
         MeshSource::Gltf(path) => geometry::load_gltf(path)?.0.mesh,
+        // Read with its file when the scene loaded.
+        MeshSource::GltfPart(part) => (*part.data).clone(),
     })
 }
 

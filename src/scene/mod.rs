@@ -19,6 +19,8 @@ pub mod camera_limits;
 pub mod clip_planes;
 mod file;
 pub mod fxaa;
+pub mod gltf_material;
+pub mod gltf_objects;
 pub mod knobs;
 mod light_grid;
 mod light_maps;
@@ -158,6 +160,9 @@ pub enum MeshSource {
     ObjPart(PathBuf, usize),
     /// A skinned mesh in a glTF 2.0 file (src/scene/skins.rs).
     Gltf(PathBuf),
+    /// One primitive of a glTF 2.0 file's mesh, or a node that draws
+    /// nothing (src/scene/gltf_objects.rs).
+    GltfPart(gltf_objects::GltfPart),
 }
 
 impl MeshSource {
@@ -214,15 +219,11 @@ impl Object {
 pub fn update_models(objects: &mut [Object]) {
     let locals: Vec<Mat4> = objects.iter().map(Object::local).collect();
     let parents: Vec<Option<usize>> = objects.iter().map(|o| o.parent).collect();
-    for (i, o) in objects.iter_mut().enumerate() {
-        let mut model = locals[i];
-        let mut up = parents[i];
-        // The loader refused cycles; the bound keeps an edited one finite.
-        for _ in 0..parents.len() {
-            let Some(p) = up else { break };
-            model = locals[p] * model;
-            up = parents[p];
-        }
+    // Once per object, parents first: a deep chain stays linear.
+    for (o, model) in objects
+        .iter_mut()
+        .zip(math::chain_globals(&locals, &parents))
+    {
         o.model = model;
     }
 }

@@ -48,7 +48,12 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     let render = super::render_settings::render_settings(&f)?;
     let lights = super::lights::lights(&f)?;
     let (mut materials, material_index) = materials(&f, base)?;
-    let (objects, file_warnings) = objects(&f, &material_index, &mut materials, base)?;
+    let (mut objects, file_warnings, loaded) = objects(&f, &material_index, &mut materials, base)?;
+    // Each glTF file's nodes, as children of its entry.
+    let gltf = super::gltf_objects::expand(&f.objects, &mut objects, &mut materials, &loaded)?;
+    if !gltf.tracks.is_empty() || objects.len() > f.objects.len() {
+        super::update_models(&mut objects);
+    }
     let mirrors = objects.iter().filter(|o| o.mirror.is_some()).count();
     if mirrors > 0 && !views.is_empty() {
         bail!(
@@ -73,7 +78,12 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     let (sprites, billboards) = super::billboards::billboards(&f, base)?;
     let post = super::post::chain(&f.post)?;
 
-    let animation = super::animation::resolve(&f.animation, &objects)?;
+    let mut animation = super::animation::resolve(&f.animation, &objects)?;
+    let moved: std::collections::HashSet<usize> = animation.rest.iter().map(|r| r.0).collect();
+    animation.tracks.extend(gltf.tracks);
+    animation
+        .rest
+        .extend(gltf.rest.into_iter().filter(|r| !moved.contains(&r.0)));
     let mut scene = Scene {
         name,
         path: path.to_path_buf(),
@@ -187,7 +197,7 @@ fn objects(
     material_index: &HashMap<String, usize>,
     materials: &mut Vec<Material>,
     base: &Path,
-) -> Result<(Vec<Object>, Vec<String>)> {
+) -> Result<(Vec<Object>, Vec<String>, super::skins::Loaded)> {
     let mut locals = Vec::new();
     let mut object_names: HashMap<String, usize> = HashMap::new();
     let mut skins = super::skins::Loaded::default();
@@ -218,7 +228,12 @@ fn objects(
                 if let Some(why) = assets::not_a_file(&p) {
                     bail!("{}: file {} {why}", key("mesh"), p.display());
                 }
-                MeshSource::Gltf(p)
+                let (gltf, warnings) = skins.load(i, &p)?;
+                if gltf.skin.is_some() {
+                    MeshSource::Gltf(p)
+                } else {
+                    MeshSource::GltfPart(super::gltf_objects::GltfPart::group(&p, warnings))
+                }
             }
             other => bail!(
                 "{}: expected one of {} or a path to an .obj, .glb or .gltf file, found \"{other}\"",
@@ -326,7 +341,7 @@ fn objects(
             );
         }
     }
-    Ok((objects, warnings))
+    Ok((objects, warnings, skins))
 }
 
 /// A path written in a scene file: relative to the file, unless it names a

@@ -125,6 +125,7 @@ impl Scene {
                         MeshSource::Obj(p) | MeshSource::Gltf(p) | MeshSource::ObjPart(p, _) => {
                             path(p)
                         }
+                        MeshSource::GltfPart(part) => path(&part.path),
                         builtin => format!("{builtin:?}").to_lowercase().into(),
                     };
                     t.insert("mesh".into(), mesh);

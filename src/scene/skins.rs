@@ -15,12 +15,12 @@
 
 use super::file::ObjectFile;
 use super::{MeshSource, Scene, SkinMethod};
-use crate::geometry::load_gltf;
 use crate::geometry::skin::SkinnedMesh;
-use anyhow::{Result, bail};
+use crate::geometry::{GltfScene, load_gltf_scene};
+use anyhow::{Result, anyhow, bail};
 use glam::Mat4;
 use std::collections::HashMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// One object's skin.
@@ -57,12 +57,32 @@ impl ObjectSkin {
     }
 }
 
-/// The glTF files read so far while resolving a scene.
+/// The glTF files read so far while resolving a scene, each with its
+/// warnings.
 #[derive(Default)]
-pub(super) struct Loaded(HashMap<PathBuf, (Arc<SkinnedMesh>, Arc<Vec<String>>)>);
+pub(super) struct Loaded(pub(super) HashMap<PathBuf, (Arc<GltfScene>, Arc<Vec<String>>)>);
 
-/// The skin of `objects[i]` (None: its mesh is no glTF file, and it must
-/// then set neither `skinning` nor `clip`).
+impl Loaded {
+    /// The file at `path` (for `objects[i].mesh`), read once.
+    pub(super) fn load(
+        &mut self,
+        i: usize,
+        path: &Path,
+    ) -> Result<(Arc<GltfScene>, Arc<Vec<String>>)> {
+        if let Some(l) = self.0.get(path) {
+            return Ok(l.clone());
+        }
+        let scene = load_gltf_scene(path).map_err(|e| anyhow!("objects[{i}].mesh: {e:#}"))?;
+        let warnings = Arc::new(scene.warnings.clone());
+        let l = (Arc::new(scene), warnings);
+        self.0.insert(path.to_path_buf(), l.clone());
+        Ok(l)
+    }
+}
+
+/// The skin of `objects[i]` (None: its mesh is no skinned glTF file, and
+/// it must then not set `skinning`; `clip` is also for a static glTF file's
+/// node animations).
 pub(super) fn object_skin(
     i: usize,
     o: &ObjectFile,
@@ -70,22 +90,18 @@ pub(super) fn object_skin(
     loaded: &mut Loaded,
 ) -> Result<Option<ObjectSkin>> {
     let MeshSource::Gltf(path) = mesh else {
-        if o.skinning.is_some() || o.clip.is_some() {
+        let gltf = matches!(mesh, MeshSource::GltfPart(_));
+        if o.skinning.is_some() || (o.clip.is_some() && !gltf) {
             bail!(
-                "objects[{i}]: `skinning` and `clip` are for a skinned mesh (a .glb or .gltf file), not mesh \"{}\"",
+                "objects[{i}]: `skinning` and `clip` are for a skinned mesh (a .glb or .gltf file; `clip` also plays a glTF file's node animations), not mesh \"{}\"",
                 o.mesh
             );
         }
         return Ok(None);
     };
-    let (skinned, warnings) = match loaded.0.get(path) {
-        Some(l) => l.clone(),
-        None => {
-            let (m, w) = load_gltf(path)?;
-            let l = (Arc::new(m), Arc::new(w));
-            loaded.0.insert(path.clone(), l.clone());
-            l
-        }
+    let (scene, warnings) = loaded.load(i, path)?;
+    let Some((skinned, _)) = scene.skin.clone() else {
+        bail!("objects[{i}].mesh: {} has no skin", path.display());
     };
     let clip = match o.clip.as_deref() {
         None => (!skinned.clips.is_empty()).then_some(0),

@@ -27,10 +27,15 @@ impl Scene {
         w.extend(self.file_warnings.iter().cloned());
         // What loading each skinned mesh's file said, once per file.
         let mut seen = Vec::new();
-        for s in self.objects.iter().filter_map(|o| o.skin.as_ref()) {
-            if !seen.iter().any(|p| std::ptr::eq(*p, s.warnings.as_ref())) {
-                seen.push(s.warnings.as_ref());
-                w.extend(s.warnings.iter().cloned());
+        for o in &self.objects {
+            let said = match (&o.skin, &o.mesh) {
+                (Some(s), _) => s.warnings.as_ref(),
+                (None, super::MeshSource::GltfPart(p)) => p.warnings.as_ref(),
+                _ => continue,
+            };
+            if !seen.iter().any(|p| std::ptr::eq(*p, said)) {
+                seen.push(said);
+                w.extend(said.iter().cloned());
             }
         }
         w

@@ -5,7 +5,8 @@
 //! * `scene-*/`: a scene file, read as if it lay in scenes/ (so that
 //!   `assets/...` paths resolve); leading `# --set KEY=VALUE` lines are
 //!   overrides.
-//! * `obj-*/`, `mtl-*/`, `png-*/`, `gltf-*/`: the file's bytes.
+//! * `obj-*/`, `mtl-*/`, `png-*/`, `gltf-*/`: the file's bytes (`gltf-scene*/`:
+//!   a .gltf read as a whole scene, the others a skin).
 //! * `cli/`: one argument a line.
 
 use crate::root;
@@ -50,6 +51,8 @@ fn every_kept_input_still_holds() {
             crate::mtl::check(&bytes)
         } else if kind.starts_with("png") {
             crate::png::check(&bytes)
+        } else if kind.starts_with("gltf-scene") {
+            crate::gltf::check_scene(&bytes)
         } else if kind.starts_with("gltf") {
             crate::gltf::check(&bytes)
         } else if kind == "cli" {
@@ -74,6 +77,7 @@ fn every_kept_input_still_holds() {
         "mtl-mutated",
         "png-mutated",
         "gltf-mutated",
+        "gltf-scene",
         "cli",
     ] {
         assert!(kinds.contains(kind), "no kept inputs for {kind}: {kinds:?}");

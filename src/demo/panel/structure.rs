@@ -38,12 +38,20 @@ fn choose(
 /// The name a mesh goes by in the panel.
 fn mesh_name(m: &MeshSource) -> String {
     match m {
-        MeshSource::Obj(p) | MeshSource::Gltf(p) | MeshSource::ObjPart(p, _) => {
-            p.file_name().map_or_else(
-                || p.display().to_string(),
-                |n| n.to_string_lossy().into_owned(),
-            )
+        MeshSource::GltfPart(part) if part.mesh != crate::scene::gltf_objects::GltfPart::GROUP => {
+            let file = part
+                .path
+                .file_name()
+                .map_or_else(String::new, |f| f.to_string_lossy().into_owned());
+            format!("{file} mesh {} part {}", part.mesh, part.primitive)
         }
+        MeshSource::GltfPart(crate::scene::gltf_objects::GltfPart { path: p, .. })
+        | MeshSource::Obj(p)
+        | MeshSource::Gltf(p)
+        | MeshSource::ObjPart(p, _) => p.file_name().map_or_else(
+            || p.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        ),
         other => format!("{other:?}").to_lowercase(),
     }
 }

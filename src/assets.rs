@@ -6,6 +6,8 @@
 //! stay embedded. A path the user gives is read from disk when it exists
 //! there; otherwise a shipped scene of that name is used.
 
+pub mod write;
+
 use anyhow::{Result, anyhow, bail};
 use include_dir::{Dir, File, include_dir};
 use std::borrow::Cow;

@@ -9,16 +9,46 @@ use anyhow::{Result, bail};
 /// either of which in a hostile file can be megabytes long.
 pub const MAX_MESSAGE_CHARS: usize = 2000;
 
+/// The longest last line `quoted` keeps whole after a cut: the TOML
+/// parser ends its message with its reason ("cannot recurse further; max
+/// recursion depth met"), after the line it quotes.
+const REASON_CHARS: usize = 300;
+
 /// A message, trimmed, and cut at `MAX_MESSAGE_CHARS` with a note of how
-/// much was left out.
+/// much was left out; a short last line (the parser's reason) is kept
+/// after the cut.
 pub(super) fn quoted(message: &str) -> String {
     let m = message.trim_end();
-    match m.char_indices().nth(MAX_MESSAGE_CHARS) {
-        None => m.to_string(),
+    if m.chars().count() <= MAX_MESSAGE_CHARS {
+        return m.to_string();
+    }
+    let (body, reason) = match m.rsplit_once('\n') {
+        Some((b, last)) if last.chars().count() <= REASON_CHARS => (b, Some(last)),
+        _ => (m, None),
+    };
+    let room = MAX_MESSAGE_CHARS - reason.map_or(0, |r| r.chars().count() + 1);
+    let cut = body.char_indices().nth(room).map_or(body.len(), |(i, _)| i);
+    let mut out = format!(
+        "{}... ({} more characters of the message left out)",
+        &body[..cut],
+        body[cut..].chars().count()
+    );
+    if let Some(r) = reason {
+        out.push('\n');
+        out.push_str(r);
+    }
+    out
+}
+
+/// `s` cut to `n` characters, with a note of how many were left out: a
+/// `--set` the user typed, quoted in a message about it.
+pub(super) fn short(s: &str, n: usize) -> String {
+    match s.char_indices().nth(n) {
+        None => s.to_string(),
         Some((cut, _)) => format!(
-            "{}... ({} more characters of the message left out)",
-            &m[..cut],
-            m[cut..].chars().count()
+            "{}...({} more characters)",
+            &s[..cut],
+            s[cut..].chars().count()
         ),
     }
 }

@@ -15,6 +15,9 @@
 //! * `silent`: nothing dropped without a word; values past the world limits;
 //! * `messages`: what a message names.
 
+mod chains;
+mod keys;
+mod mirrors;
 mod output;
 
 use std::collections::BTreeMap;

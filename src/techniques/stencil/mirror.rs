@@ -37,6 +37,7 @@ use crate::frame::views::View;
 use crate::frame::{Frame, FrameOrder, Programs, RunPasses, Runs, Stage, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
+use crate::scene::mirror_views::{self, Seen};
 use crate::scene::{MirrorOrder, Scene};
 use anyhow::Result;
 use glam::Mat4;
@@ -166,21 +167,39 @@ fn normal_first(scene: &Scene, mirrors: &[usize]) -> FrameOrder {
     let levels = scene.render.mirror_depth + 1;
     for (i, &m) in mirrors.iter().enumerate() {
         // Mirror i's own stencil value, and one more per level inside it.
-        visit(scene, mirrors, &mut order, m, 0, 1, 1 + i as u32 * levels);
+        let at = At {
+            parent: 0,
+            seen: Some(Seen::camera()),
+            level: 1,
+            value: 1 + i as u32 * levels,
+        };
+        visit(scene, mirrors, &mut order, m, at);
     }
     order
 }
 
-/// Mirror `m` seen in view `parent`, `level` mirrors deep, marked `value`.
-fn visit(
-    scene: &Scene,
-    mirrors: &[usize],
-    order: &mut FrameOrder,
-    m: usize,
+/// Where a mirror is seen: in view `parent` (what can be seen there:
+/// `seen`, None inside a curved mirror, where every mirror is drawn blank),
+/// `level` mirrors deep, marked `value`.
+#[derive(Clone, Copy)]
+struct At {
     parent: usize,
+    seen: Option<Seen>,
     level: u32,
     value: u32,
-) {
+}
+
+/// Mirror `m` seen at `at`. Only the mirrors that can show in its
+/// reflection are followed into it (src/scene/mirror_views.rs), and no
+/// view is added past `MAX_MIRROR_VIEWS` (the scene refuses such a
+/// depth when it is read; the demo may move the camera since).
+fn visit(scene: &Scene, mirrors: &[usize], order: &mut FrameOrder, m: usize, at: At) {
+    let At {
+        parent,
+        level,
+        value,
+        ..
+    } = at;
     let name = &scene.objects[m].name;
     let own = |pass: &'static str, step: u32, draws: String| {
         Stage::Own(
@@ -190,6 +209,15 @@ fn visit(
                 .for_view(parent),
         )
     };
+    // Where the mirror can show (None: nowhere), and what its reflection can see.
+    let rect = match at.seen {
+        Some(s) => mirror_views::seen_in(scene, &s, m),
+        None => Some(mirror_views::SCREEN),
+    };
+    let inner = match (at.seen, rect) {
+        (Some(s), Some(rect)) => mirror_views::reflected(scene, &s, m, rect),
+        _ => None,
+    };
     // None: the mirror is drawn blank (marked and tinted, no reflection).
     let view = reflected_view(scene, &order.views[parent], m, Some(value as u8));
     let how = if level == 1 { "" } else { " (increment)" };
@@ -198,7 +226,10 @@ fn visit(
         MARK,
         format!("mirror '{name}': stencil {value}{how} where it passes the depth test"),
     ));
-    if let Some(view) = view.filter(|_| level <= scene.render.mirror_depth) {
+    let room = order.views.len() <= mirror_views::MAX_MIRROR_VIEWS;
+    if let Some(view) =
+        view.filter(|_| level <= scene.render.mirror_depth && rect.is_some() && room)
+    {
         order.stages.push(own(
             "mirror depth clear",
             CLEAR_DEPTH,
@@ -208,7 +239,17 @@ fn visit(
         let k = order.views.len() - 1;
         order.stages.push(Stage::World(k));
         for &c in mirrors.iter().filter(|&&c| c != m) {
-            visit(scene, mirrors, order, c, k, level + 1, value + 1);
+            // In a curved mirror's view every mirror is drawn blank, as before.
+            if inner.is_some_and(|s| mirror_views::seen_in(scene, &s, c).is_none()) {
+                continue;
+            }
+            let at = At {
+                parent: k,
+                seen: inner,
+                level: level + 1,
+                value: value + 1,
+            };
+            visit(scene, mirrors, order, c, at);
         }
     }
     order.stages.push(own(

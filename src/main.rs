@@ -190,8 +190,10 @@ fn run(mut cli: Cli) -> Result<()> {
             dot,
         }) => {
             let s = load_scene(&scene, &cli.set, path, lights)?;
-            let unchecked = gloss::frame::check::check_without_gl(&s)?;
+            let mut unchecked = gloss::frame::check::check_without_gl(&s)?;
             let plan = gloss::techniques::plan(&s);
+            let (w, h) = s.render.size;
+            unchecked.extend(gloss::frame::budget::check(&s, &plan.targets, w, h, None)?);
             print!("{plan}");
             if let Some(file) = dot {
                 let text = gloss::frame::plan_graph::dot(&plan, &s.name);

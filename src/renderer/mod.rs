@@ -104,7 +104,12 @@ impl Renderer {
         }
         let lights = FrameLights::new(scene);
         let plan = FramePlan::new(scene, &lights, techniques::ALL);
-        let targets = Targets::new(gl, &target_descs(&plan, output_kind), width, height)?;
+        // Every texture against this GL's limits and the memory budget,
+        // and the light maps' bake against its work limit, before any of it.
+        let descs = target_descs(&plan, output_kind);
+        let limits = crate::frame::budget::GlLimits::query(gl);
+        crate::frame::budget::check(scene, &descs, width as u32, height as u32, Some(&limits))?;
+        let targets = Targets::new(gl, &descs, width, height)?;
         let lights_ubo = Buffer::new(
             gl,
             glow::UNIFORM_BUFFER,

@@ -15,6 +15,7 @@
 //! * `silent`: nothing dropped without a word; values past the world limits;
 //! * `messages`: what a message names.
 
+mod budget;
 mod chains;
 mod keys;
 mod mirrors;

@@ -100,6 +100,8 @@ pub(super) fn resolve(f: Option<&TessellationFile>, base: &Path) -> Result<Optio
         );
     }
     finite("tessellation.height", &[t.height])?;
+    super::camera_limits::within_world("tessellation.size", &[t.size])?;
+    super::camera_limits::within_world("tessellation.height", &[t.height])?;
     let [far, near] = t.levels;
     if !(far.is_finite() && near.is_finite() && far >= 1.0 && near >= far && near <= MAX_LEVEL) {
         bail!(

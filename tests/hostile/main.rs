@@ -20,6 +20,7 @@ mod chains;
 mod keys;
 mod mirrors;
 mod output;
+mod silent;
 
 use std::collections::BTreeMap;
 use std::ffi::OsStr;

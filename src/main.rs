@@ -103,8 +103,13 @@ fn load_scene(
 
 fn run(mut cli: Cli) -> Result<()> {
     if let Some(t) = cli.time {
-        // The scene checks it as it checks the file's own time.
-        cli.set.push(format!("animation.time={t}"));
+        if !t.is_finite() {
+            bail!("--time {t}: expected a finite number of seconds");
+        }
+        // The scene checks it as it checks the file's own time; `{:?}`
+        // writes 1e19 as TOML reads it (`{}` would write 20 digits, too
+        // many for TOML's integers).
+        cli.set.push(format!("animation.time={t:?}"));
     }
     match cli.command {
         None => {

@@ -34,6 +34,7 @@ pub use super::render_settings::{
 pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     // The fields' objects, after the file's own.
     let generated = super::object_fields::expand(&f.object_fields)?;
+    let file_objects = f.objects.len();
     f.objects.extend(generated);
     let base = path.parent().unwrap_or(Path::new("."));
     let name = f.name.clone().unwrap_or_else(|| {
@@ -47,7 +48,8 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     let render = super::render_settings::render_settings(&f)?;
     let lights = super::lights::lights(&f)?;
     let (materials, material_index) = materials(&f, base)?;
-    let objects = objects(&f, &material_index, base)?;
+    let objects = objects(&f, &material_index, base)
+        .map_err(|e| super::object_fields::name_field(e, file_objects, &f))?;
     let mirrors = objects.iter().filter(|o| o.mirror.is_some()).count();
     if mirrors > 0 && !views.is_empty() {
         bail!(

@@ -129,6 +129,14 @@ pub(super) fn resolve(f: Option<&TessellationFile>, base: &Path) -> Result<Optio
             displacement.display()
         );
     }
+    // Decoded now, so that a broken map is an error when the scene is read
+    // (not a warning when the pass runs), in printable words.
+    if let Err(e) = crate::gl::image_file::load_rgba8(&displacement) {
+        bail!(
+            "tessellation.displacement: {}",
+            super::text::printable(&format!("{e:#}"))
+        );
+    }
     Ok(Some(Tessellation {
         size: t.size,
         patches: t.patches,

@@ -40,6 +40,54 @@ pub(super) fn quoted(message: &str) -> String {
     out
 }
 
+/// A message about a binary file's content (an image decoder's) made
+/// printable: a chunk type the decoder shows as `ChunkType { type: ... }`
+/// becomes its bytes in hex, escaped or control characters become `?`,
+/// and a reason the decoder repeats (`A: A`) is said once.
+pub(crate) fn printable(message: &str) -> String {
+    let mut m = message.to_string();
+    while let Some(at) = m.find("ChunkType { type: ") {
+        let end = m[at..].find(" }").map_or(m.len(), |e| at + e + 2);
+        let inner = &m[at + "ChunkType { type: ".len()..end];
+        let ty = inner.split(',').next().unwrap_or("");
+        let hex: Vec<String> = unescape(ty).bytes().map(|b| format!("{b:02x}")).collect();
+        m.replace_range(at..end, &format!("chunk [{}]", hex.join(" ")));
+    }
+    let mut out = String::new();
+    let mut rest = m.as_str();
+    while let Some(at) = rest.find("\\u{") {
+        out.push_str(&rest[..at]);
+        let end = rest[at..].find('}').map_or(rest.len(), |e| at + e + 1);
+        out.push('?');
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    let out: String = out
+        .chars()
+        .map(|c| if c.is_control() && c != '\n' { '?' } else { c })
+        .collect();
+    // "X: Y: Y" -> "X: Y".
+    match out.rsplit_once(": ") {
+        Some((head, last)) if head.ends_with(last) && !last.is_empty() => head.to_string(),
+        _ => out,
+    }
+}
+
+/// The characters Rust's Debug escapes as `\u{4}` back as they were.
+fn unescape(s: &str) -> String {
+    let mut out = String::new();
+    let mut rest = s;
+    while let Some(at) = rest.find("\\u{") {
+        out.push_str(&rest[..at]);
+        let end = rest[at..].find('}').map_or(rest.len(), |e| at + e);
+        let code = u32::from_str_radix(&rest[at + 3..end], 16).ok();
+        out.extend(code.and_then(char::from_u32));
+        rest = &rest[(end + 1).min(rest.len())..];
+    }
+    out.push_str(rest);
+    out
+}
+
 /// `s` cut to `n` characters, with a note of how many were left out: a
 /// `--set` the user typed, quoted in a message about it.
 pub(super) fn short(s: &str, n: usize) -> String {

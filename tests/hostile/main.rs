@@ -18,6 +18,7 @@
 mod budget;
 mod chains;
 mod keys;
+mod messages;
 mod mirrors;
 mod output;
 mod silent;

@@ -100,9 +100,7 @@ fn items(scene: &Scene, targets: &[TargetDesc], width: u32, height: u32) -> Vec<
         largest: largest_target,
         bytes: targets.iter().map(|t| t.bytes(width, height)).sum(),
     });
-    let depth = u64::from(crate::frame::targets::bytes_per_pixel(
-        crate::gl::depth_map::FORMAT,
-    ));
+    let depth = crate::frame::targets::bytes_per_pixel(crate::gl::depth_map::FORMAT);
     for c in crate::frame::shadows::casters(scene) {
         let r = c.shadow.resolution;
         let face = u64::from(r) * u64::from(r) * depth;

@@ -186,7 +186,7 @@ pub(super) fn name_field(e: anyhow::Error, file_objects: usize, f: &SceneFile) -
             left -= made;
             continue;
         }
-        let child = left % (field.children + 1) != 0;
+        let child = !left.is_multiple_of(field.children + 1);
         let name = f.objects[n].name.clone().unwrap_or_default();
         let (attr, tail) = match rest.strip_prefix('.') {
             Some(r) => {

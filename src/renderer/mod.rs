@@ -104,11 +104,7 @@ impl Renderer {
         }
         let lights = FrameLights::new(scene);
         let plan = FramePlan::new(scene, &lights, techniques::ALL);
-        // Every texture against this GL's limits and the memory budget,
-        // and the light maps' bake against its work limit, before any of it.
-        let descs = target_descs(&plan, output_kind);
-        let limits = crate::frame::budget::GlLimits::query(gl);
-        crate::frame::budget::check(scene, &descs, width as u32, height as u32, Some(&limits))?;
+        let descs = output::checked_targets(gl, scene, &plan, output_kind, (width, height))?;
         let targets = Targets::new(gl, &descs, width, height)?;
         let lights_ubo = Buffer::new(
             gl,

@@ -6,6 +6,8 @@
 //! stay embedded. A path the user gives is read from disk when it exists
 //! there; otherwise a shipped scene of that name is used.
 
+pub mod write;
+
 use anyhow::{Result, anyhow, bail};
 use include_dir::{Dir, File, include_dir};
 use std::borrow::Cow;
@@ -156,7 +158,11 @@ pub fn assets_beside(scene: &Path, ext: &str) -> Vec<PathBuf> {
 /// (`scenes/default.toml`, `default.toml` or `default`), else `path`
 /// unchanged (reading it then fails with a clear message).
 pub fn scene_path(path: &Path) -> PathBuf {
-    if path.exists() || path.to_str().is_some_and(|s| s.starts_with(EMBEDDED)) {
+    // Anything at the path, a dangling link included, is the user's: a
+    // link to nothing is an error to report, not the shipped scene.
+    if std::fs::symlink_metadata(path).is_ok()
+        || path.to_str().is_some_and(|s| s.starts_with(EMBEDDED))
+    {
         return path.to_path_buf();
     }
     let name = path.to_string_lossy();
@@ -185,8 +191,13 @@ pub fn read(path: &Path, max_bytes: u64, what: &str) -> Result<Cow<'static, [u8]
         );
     }
     use std::io::Read as _;
-    let file = std::fs::File::open(path)
-        .map_err(|e| anyhow!("cannot read {what} {}: {e}", path.display()))?;
+    let file = std::fs::File::open(path).map_err(|e| match not_a_file(path) {
+        // A link to nothing says so.
+        Some(why) if why.starts_with("is a symbolic link") => {
+            anyhow!("cannot read {what} {}: it {why}", path.display())
+        }
+        _ => anyhow!("cannot read {what} {}: {e}", path.display()),
+    })?;
     let mut bytes = Vec::new();
     file.take(max_bytes + 1)
         .read_to_end(&mut bytes)

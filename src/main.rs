@@ -76,22 +76,12 @@ fn render_to_png(
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
-    // Write to a temporary name and rename, so a failed write never leaves half a file
-    // where the user's old picture was.
-    // On any failure the temporary file goes too.
-    if out.is_dir() {
-        bail!("cannot write {}: it is a directory", out.display());
-    }
-    let tmp = out.with_extension("png.tmp");
-    let written = img
-        .save_with_format(&tmp, image::ImageFormat::Png)
-        .map_err(anyhow::Error::from)
-        .and_then(|()| std::fs::rename(&tmp, out).map_err(anyhow::Error::from));
-    if let Err(e) = written {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(e.context(format!("cannot write {}", out.display())));
-    }
-    Ok(())
+    // The whole PNG in memory first, then written without harming any other
+    // file (src/assets/write.rs): a failed write leaves the old picture.
+    let mut png = std::io::Cursor::new(Vec::new());
+    img.write_to(&mut png, image::ImageFormat::Png)
+        .with_context(|| format!("cannot write {}", out.display()))?;
+    assets::write::write_file(out, png.get_ref())
 }
 
 fn load_scene(
@@ -113,8 +103,13 @@ fn load_scene(
 
 fn run(mut cli: Cli) -> Result<()> {
     if let Some(t) = cli.time {
-        // The scene checks it as it checks the file's own time.
-        cli.set.push(format!("animation.time={t}"));
+        if !t.is_finite() {
+            bail!("--time {t}: expected a finite number of seconds");
+        }
+        // The scene checks it as it checks the file's own time; `{:?}`
+        // writes 1e19 as TOML reads it (`{}` would write 20 digits, too
+        // many for TOML's integers).
+        cli.set.push(format!("animation.time={t:?}"));
     }
     match cli.command {
         None => {
@@ -200,13 +195,14 @@ fn run(mut cli: Cli) -> Result<()> {
             dot,
         }) => {
             let s = load_scene(&scene, &cli.set, path, lights)?;
-            let unchecked = gloss::frame::check::check_without_gl(&s)?;
+            let mut unchecked = gloss::frame::check::check_without_gl(&s)?;
             let plan = gloss::techniques::plan(&s);
+            let (w, h) = s.render.size;
+            unchecked.extend(gloss::frame::budget::check(&s, &plan.targets, w, h, None)?);
             print!("{plan}");
             if let Some(file) = dot {
                 let text = gloss::frame::plan_graph::dot(&plan, &s.name);
-                std::fs::write(&file, text)
-                    .with_context(|| format!("writing {}", file.display()))?;
+                assets::write::write_file(&file, text.as_bytes())?;
                 println!("wrote the data-flow diagram to {}", file.display());
             }
             let c = gloss::frame::culling::scene_stats(&s)?;

@@ -10,6 +10,10 @@ use crate::scene::Scene;
 use crate::scene::meshes::mesh_data;
 use anyhow::{Context as _, Result};
 
+/// A bake of this much work (src/frame/budget.rs) or more prints its
+/// progress: about a second.
+pub const LONG_BAKE: u64 = 1 << 21;
+
 /// Each object's light map (notes 01 §8.2), baked on the CPU
 /// (src/lighting/static_lighting.rs) and uploaded as GL_RGBA16F; None for
 /// an object without `light_map`.
@@ -24,11 +28,29 @@ pub fn bake_light_maps(gl: &Gl, scene: &Scene) -> Result<Vec<Option<Texture>>> {
         None
     };
     let mut maps = Vec::new();
+    // The budget (src/frame/budget.rs) bounded the work; a long bake says
+    // what it is doing, object by object.
+    let work = crate::frame::budget::bake_work(scene);
+    let total: u64 = work.iter().map(|w| w.1).sum();
+    let mut done = 0;
     for (i, o) in scene.objects.iter().enumerate() {
         let Some(l) = o.light_map else {
             maps.push(None);
             continue;
         };
+        if total >= LONG_BAKE {
+            let here = work.iter().find(|w| w.0 == i).map_or(0, |w| w.1);
+            eprintln!(
+                "gloss: baking the light map of object {} ({}x{} texels, {} lights{}): {}% of the bake done",
+                o.name,
+                l.size,
+                l.size,
+                scene.lights.len(),
+                if l.shadows { ", shadow rays" } else { "" },
+                100 * done / total
+            );
+            done += here;
+        }
         let mesh = mesh_data(&o.mesh)?;
         let occluders = occluders.as_ref().filter(|_| l.shadows);
         let baked = static_lighting::bake(scene, i, &mesh, l.size, occluders);

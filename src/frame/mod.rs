@@ -20,6 +20,7 @@
 //!   renderer loads, the light count), with the renderer's own functions.
 
 pub mod billboards;
+pub mod budget;
 pub mod check;
 pub mod clusters;
 pub mod culling;

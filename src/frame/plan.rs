@@ -37,6 +37,9 @@ pub struct FramePlan {
     /// The materials' textures (notes 01 §5.3): file, width, height, or the
     /// error reading its header.
     pub textures: Vec<PlanTexture>,
+    /// What the scene has that this path does not draw, in words (the
+    /// scene's warnings say it too): nothing is dropped in silence.
+    pub not_drawn: Vec<String>,
 }
 
 /// A texture in the plan: its file name, and its width and height or why
@@ -169,6 +172,7 @@ impl FramePlan {
             size: scene.render.size,
             depth_precision: DepthPrecision::new(scene),
             textures: textures(scene),
+            not_drawn: not_drawn(scene),
         }
     }
 
@@ -179,6 +183,18 @@ impl FramePlan {
     pub fn target(&self, name: &str) -> Option<&TargetDesc> {
         self.targets.iter().find(|t| t.name == name)
     }
+}
+
+/// What `scene` has that its path does not draw.
+fn not_drawn(scene: &Scene) -> Vec<String> {
+    let mut v = Vec::new();
+    if scene.tessellation.is_some() && scene.render.path != crate::scene::RenderPath::Forward {
+        v.push(format!(
+            "the [tessellation] terrain: its pass runs on the forward path only, not on {}",
+            scene.render.path.name()
+        ));
+    }
+    v
 }
 
 /// The textures the scene's objects sample, each once, with their sizes.
@@ -245,6 +261,9 @@ impl std::fmt::Display for FramePlan {
             for (i, v) in self.views.iter().enumerate() {
                 writeln!(f, "  {i}. {}", v.name)?;
             }
+        }
+        for what in &self.not_drawn {
+            writeln!(f, "not drawn: {what}")?;
         }
         writeln!(f, "passes:")?;
         for (i, p) in self.passes.iter().enumerate() {

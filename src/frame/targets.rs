@@ -105,6 +105,27 @@ impl TargetDesc {
         pixels * (colors + depth) * u64::from(self.samples.max(1))
     }
 
+    /// The bytes of each of its textures at `width` x `height` (a mip
+    /// target's chain is one texture): what one allocation asks for.
+    pub fn single_textures(&self, width: u32, height: u32) -> Vec<u64> {
+        let whole = self.bytes(width, height);
+        let per_pixel: u64 = (self.colors.iter().map(|&(_, f)| bytes_per_pixel(f)))
+            .chain(match self.depth {
+                Depth::Own(f) => Some(bytes_per_pixel(f)),
+                _ => None,
+            })
+            .sum();
+        if per_pixel == 0 {
+            return Vec::new();
+        }
+        let colors = self.colors.iter().map(|&(_, f)| bytes_per_pixel(f));
+        let depth = match self.depth {
+            Depth::Own(f) => Some(bytes_per_pixel(f)),
+            _ => None,
+        };
+        colors.chain(depth).map(|b| whole / per_pixel * b).collect()
+    }
+
     /// Every attachment as "name:FORMAT", depth last.
     pub fn attachments(&self) -> Vec<String> {
         let mut v: Vec<String> = self

@@ -107,7 +107,8 @@ impl Renderer {
         }
         let lights = FrameLights::new(scene);
         let plan = FramePlan::new(scene, &lights, techniques::ALL);
-        let targets = Targets::new(gl, &target_descs(&plan, output_kind), width, height)?;
+        let descs = output::checked_targets(gl, scene, &plan, output_kind, (width, height))?;
+        let targets = Targets::new(gl, &descs, width, height)?;
         let lights_ubo = Buffer::new(
             gl,
             glow::UNIFORM_BUFFER,

@@ -251,3 +251,20 @@ pub(super) fn target_descs(plan: &FramePlan, output: Output) -> Vec<TargetDesc> 
     }
     descs
 }
+
+/// The plan's render targets for `output`, once the frame budget
+/// (src/frame/budget.rs) has checked every texture against this GL's
+/// limits and the memory budget, and the light maps' bake against its work
+/// limit: before any of it is made.
+pub(super) fn checked_targets(
+    gl: &crate::gl::Gl,
+    scene: &crate::scene::Scene,
+    plan: &crate::frame::plan::FramePlan,
+    output: Output,
+    (width, height): (i32, i32),
+) -> anyhow::Result<Vec<crate::frame::targets::TargetDesc>> {
+    let descs = target_descs(plan, output);
+    let limits = crate::frame::budget::GlLimits::query(gl);
+    crate::frame::budget::check(scene, &descs, width as u32, height as u32, Some(&limits))?;
+    Ok(descs)
+}

@@ -156,6 +156,10 @@ pub(super) fn resolve(f: &AnimationFile, objects: &[Object]) -> Result<Animation
         let vec3 = |name: &str, v: &Option<Vec<[f32; 3]>>| -> Result<Option<Track<Vec3>>> {
             v.as_ref()
                 .map(|v| {
+                    for (k, a) in v.iter().enumerate() {
+                        let at = format!("{key}.{name}[{k}]");
+                        super::camera_limits::within_world(&at, a)?;
+                    }
                     let values = v.iter().map(|&a| Vec3::from(a)).collect();
                     Track::new(&format!("{key}.{name}"), t.times.clone(), values, how)
                 })

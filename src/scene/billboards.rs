@@ -20,6 +20,7 @@
 //! aspect = 1.0                 # width / height
 //! ```
 
+use super::camera_limits::within_world;
 use super::file::SceneFile;
 use super::light_grid::SplitMix;
 use super::resolve::finite;
@@ -143,6 +144,7 @@ fn expand(
     for (i, b) in list.iter().enumerate() {
         let key = |k: &str| format!("billboards[{i}].{k}");
         finite(&key("center"), &b.center)?;
+        within_world(&key("center"), &b.center)?;
         positive(&key("size"), &b.size)?;
         out.push(Billboard {
             center: Vec3::from(b.center),
@@ -155,6 +157,7 @@ fn expand(
         let key = |k: &str| format!("billboard_fields[{i}].{k}");
         let [x0, x1, z0, z1] = g.area;
         finite(&key("area"), &g.area)?;
+        within_world(&key("area"), &g.area)?;
         if !(x0 <= x1 && z0 <= z1) {
             bail!(
                 "{}: expected [xmin, xmax, zmin, zmax] with min <= max, found {:?}",
@@ -163,6 +166,7 @@ fn expand(
             );
         }
         finite(&key("ground"), &[g.ground])?;
+        within_world(&key("ground"), &[g.ground])?;
         positive(&key("height"), &g.height)?;
         if g.height[0] > g.height[1] {
             bail!(
@@ -180,6 +184,7 @@ fn expand(
 
 fn positive(key: &str, v: &[f32]) -> Result<()> {
     finite(key, v)?;
+    within_world(key, v)?;
     if v.iter().any(|x| *x <= 0.0) {
         bail!("{key}: expected values > 0, found {v:?}");
     }

@@ -68,6 +68,9 @@ pub struct Mirror {
     /// its front faces look along.
     pub local_point: Vec3,
     pub local_normal: Vec3,
+    /// The mesh's box in object space (lowest, highest corner): what can
+    /// be seen of the mirror (src/scene/mirror_views.rs).
+    pub local_bounds: (Vec3, Vec3),
 }
 
 impl Object {
@@ -130,15 +133,26 @@ pub(super) fn mirror(
     if file.infinite && file.covered {
         bail!("{key}: a mirror is either infinite or covered, not both");
     }
-    let (local_point, local_normal) = match mesh {
-        MeshSource::Sphere | MeshSource::Icosphere if file.curved => (Vec3::ZERO, Vec3::Y),
+    let (local_point, local_normal, local_bounds) = match mesh {
+        // geometry::uv_sphere and icosphere: radius 1 about the origin.
+        MeshSource::Sphere | MeshSource::Icosphere if file.curved => {
+            (Vec3::ZERO, Vec3::Y, (Vec3::splat(-1.0), Vec3::ONE))
+        }
         _ if file.curved => bail!(
             "{key}.curved: a curved mirror is a sphere: mesh \"sphere\" or \"icosphere\", not {mesh:?}"
         ),
-        // geometry::plane: the xz plane, facing +y.
-        MeshSource::Plane => (Vec3::ZERO, Vec3::Y),
-        MeshSource::Obj(path) => flat(&geometry::load_obj(path)?)
-            .map_err(|e| anyhow::anyhow!("{key}: {} {e}", path.display()))?,
+        // geometry::plane(2, 2): the xz plane from -1 to 1, facing +y.
+        MeshSource::Plane => (
+            Vec3::ZERO,
+            Vec3::Y,
+            (Vec3::new(-1.0, 0.0, -1.0), Vec3::new(1.0, 0.0, 1.0)),
+        ),
+        MeshSource::Obj(path) => {
+            let data = geometry::load_obj(path)?;
+            let (p, n) =
+                flat(&data).map_err(|e| anyhow::anyhow!("{key}: {} {e}", path.display()))?;
+            (p, n, bounds(&data))
+        }
         other => bail!(
             "{key}: a mirror must be flat: mesh \"plane\" or an .obj whose faces are coplanar, not {other:?}"
         ),
@@ -152,7 +166,16 @@ pub(super) fn mirror(
         curved: file.curved,
         local_point,
         local_normal,
+        local_bounds,
     })
+}
+
+/// A mesh's box in its own space (lowest, highest corner).
+fn bounds(mesh: &MeshData) -> (Vec3, Vec3) {
+    let points = mesh.vertices.iter().map(|v| Vec3::from(v.position));
+    let lo = points.clone().fold(Vec3::INFINITY, Vec3::min);
+    let hi = points.fold(Vec3::NEG_INFINITY, Vec3::max);
+    (lo, hi)
 }
 
 /// The plane of a flat mesh (a point on it and the normal its faces look

@@ -21,12 +21,14 @@ mod file;
 pub mod fxaa;
 pub mod gltf_material;
 pub mod gltf_objects;
+pub mod hierarchy;
 pub mod knobs;
 mod light_grid;
 mod light_maps;
 mod lights;
 pub mod material;
 pub mod meshes;
+pub mod mirror_views;
 mod mirrors;
 pub mod obj_materials;
 pub mod object_fields;
@@ -214,19 +216,7 @@ impl Object {
     }
 }
 
-/// Every object's model matrix: its local transform, then its parents' up
-/// the chain (notes 01 §6.4, scene graphs).
-pub fn update_models(objects: &mut [Object]) {
-    let locals: Vec<Mat4> = objects.iter().map(Object::local).collect();
-    let parents: Vec<Option<usize>> = objects.iter().map(|o| o.parent).collect();
-    // Once per object, parents first: a deep chain stays linear.
-    for (o, model) in objects
-        .iter_mut()
-        .zip(math::chain_globals(&locals, &parents))
-    {
-        o.model = model;
-    }
-}
+pub use hierarchy::update_models;
 
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -327,13 +317,16 @@ impl Scene {
         }
         let mut table: toml::Table = toml::from_str(text).map_err(|e| at(path, e))?;
         for o in overrides {
-            overrides::apply_override(&mut table, o)
-                .map_err(|e| anyhow!("{}", text::quoted(&format!("--set {o}: {e}"))))?;
+            overrides::apply_override(&mut table, o).map_err(|e| {
+                let o = text::short(o, 200);
+                anyhow!("{}", text::quoted(&format!("--set {o}: {e}")))
+            })?;
         }
         text::floats_in_f32_range(&table, "").map_err(|e| at(path, e))?;
         let keys_written = text::written_keys(&table);
         let file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
-            let with = format!("with --set {}: {e}", overrides.join(" --set "));
+            let all: Vec<String> = overrides.iter().map(|o| text::short(o, 200)).collect();
+            let with = format!("with --set {}: {e}", all.join(" --set "));
             anyhow!("{} {}", path.display(), text::quoted(&with))
         })?;
         let mut scene = resolve(file, path).map_err(|e| at(path, e))?;

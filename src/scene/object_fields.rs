@@ -23,7 +23,7 @@
 //! with the plate's scale divided out, so that it keeps its own size.
 //! The fields' objects come after the file's `[[objects]]`.
 
-use super::file::ObjectFile;
+use super::file::{ObjectFile, SceneFile};
 use crate::math::lcg::Lcg;
 use anyhow::{Result, bail};
 use serde::Deserialize;
@@ -162,4 +162,51 @@ fn object(
         clip: None,
         light_map: None,
     }
+}
+
+/// An error about object `objects[N]` that a field made (N at or past
+/// `file_objects`, the file's own count) names the field's key instead:
+/// `objects[700].mesh: ...` becomes `object_fields[0].child_mesh: ...
+/// (in object block3.4, which it makes)`.
+pub(super) fn name_field(e: anyhow::Error, file_objects: usize, f: &SceneFile) -> anyhow::Error {
+    let msg = e.to_string();
+    let Some(rest) = msg.strip_prefix("objects[") else {
+        return e;
+    };
+    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+    let Some(n) = digits.parse::<usize>().ok().filter(|&n| n >= file_objects) else {
+        return e;
+    };
+    let rest = &rest[digits.len() + 1..];
+    // Which field made object n, and whether as a child.
+    let mut left = n - file_objects;
+    for (k, field) in f.object_fields.iter().enumerate() {
+        let made = field.count.saturating_mul(field.children.saturating_add(1));
+        if left >= made {
+            left -= made;
+            continue;
+        }
+        let child = !left.is_multiple_of(field.children + 1);
+        let name = f.objects[n].name.clone().unwrap_or_default();
+        let (attr, tail) = match rest.strip_prefix('.') {
+            Some(r) => {
+                let word: String = r
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                let tail = r[word.len()..].to_string();
+                let word = match (word.as_str(), child) {
+                    ("mesh" | "material", true) => format!(".child_{word}"),
+                    _ => format!(".{word}"),
+                };
+                (word, tail)
+            }
+            None => (String::new(), rest.to_string()),
+        };
+        let (head, why) = tail.split_once(": ").unwrap_or((&tail, ""));
+        return anyhow::anyhow!(
+            "object_fields[{k}]{attr}{head} (in object {name}, which it makes): {why}"
+        );
+    }
+    e
 }

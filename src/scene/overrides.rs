@@ -8,6 +8,12 @@
 
 use anyhow::{Result, anyhow, bail};
 
+/// The most dotted parts a `--set` key may have. The deepest key a scene
+/// has is four parts (`materials.glass.microfacet.roughness`); each part
+/// is a level of recursion here and in every later walk of the tables, so
+/// a key of tens of thousands of parts would overflow the stack.
+pub const MAX_KEY_PARTS: usize = 16;
+
 /// Set `table.key = value` in a parsed scene file, making tables as needed.
 pub(super) fn apply_override(table: &mut toml::Table, assignment: &str) -> Result<()> {
     let (key, value) = assignment
@@ -18,6 +24,13 @@ pub(super) fn apply_override(table: &mut toml::Table, assignment: &str) -> Resul
         Ok(mut t) => t.remove("v").expect("the one key"),
         Err(_) => toml::Value::String(value.to_string()),
     };
+    // Counted before anything is split or made.
+    let count = key.split('.').count();
+    if count > MAX_KEY_PARTS {
+        bail!(
+            "the key has {count} dotted parts; a scene key has at most {MAX_KEY_PARTS} (the deepest, such as materials.glass.microfacet.roughness, has 4)"
+        );
+    }
     let parts: Vec<&str> = key.split('.').collect();
     if parts.iter().any(|p| p.is_empty()) {
         bail!("empty key");
@@ -130,6 +143,7 @@ mod tests {
             "lights[0]=1",
             "camera[0].eye=1",
             "render..x=1",
+            &format!("render{}=1", ".x".repeat(16)),
         ] {
             assert!(apply_override(&mut table(text), bad).is_err(), "{bad}");
         }

@@ -22,6 +22,7 @@
 //!
 //! The particles' time is the animation's (`[animation] time`, `--time`).
 
+use super::camera_limits::within_world;
 use super::resolve::{finite, non_negative};
 use anyhow::{Result, bail};
 use glam::Vec3;
@@ -126,11 +127,13 @@ pub(super) fn resolve(f: Option<&ParticlesFile>) -> Result<Option<Particles>> {
         if !(v.is_finite() && v > 0.0) {
             bail!("particles.{key}: expected a number > 0, found {v}");
         }
+        within_world(&format!("particles.{key}"), &[v])?;
         Ok(v)
     };
     let vec = |key: &str, v: Option<[f32; 3]>, default: Vec3| -> Result<Vec3> {
         let v = v.map_or(default, Vec3::from);
         finite(&format!("particles.{key}"), &v.to_array())?;
+        within_world(&format!("particles.{key}"), &v.to_array())?;
         Ok(v)
     };
     let direction = vec("direction", f.direction, d.direction)?;
@@ -143,6 +146,7 @@ pub(super) fn resolve(f: Option<&ParticlesFile>) -> Result<Option<Particles>> {
     }
     let speed = f.speed.unwrap_or(d.speed);
     non_negative("particles.speed", &[speed])?;
+    within_world("particles.speed", &[speed])?;
     let color = vec("color", f.color, d.color)?;
     non_negative("particles.color", &color.to_array())?;
     Ok(Some(Particles {

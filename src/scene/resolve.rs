@@ -35,6 +35,7 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     super::meshes::forget_obj_files();
     // The fields' objects, after the file's own.
     let generated = super::object_fields::expand(&f.object_fields)?;
+    let file_objects = f.objects.len();
     f.objects.extend(generated);
     let base = path.parent().unwrap_or(Path::new("."));
     let name = f.name.clone().unwrap_or_else(|| {
@@ -48,7 +49,8 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     let render = super::render_settings::render_settings(&f)?;
     let lights = super::lights::lights(&f)?;
     let (mut materials, material_index) = materials(&f, base)?;
-    let (mut objects, file_warnings, loaded) = objects(&f, &material_index, &mut materials, base)?;
+    let (mut objects, file_warnings, loaded) = objects(&f, &material_index, &mut materials, base)
+        .map_err(|e| super::object_fields::name_field(e, file_objects, &f))?;
     // Each glTF file's nodes, as children of its entry.
     let gltf = super::gltf_objects::expand(&f.objects, &mut objects, &mut materials, &loaded)?;
     if !gltf.tracks.is_empty() || objects.len() > f.objects.len() {
@@ -112,6 +114,8 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     // The instant the file asks for.
     super::skybox::check_reflective(&scene)?;
     scene.set_time(scene.animation.time)?;
+    // Mirrors in mirrors: bounded before any view is made.
+    super::mirror_views::check(&scene)?;
     Ok(scene)
 }
 
@@ -262,25 +266,24 @@ fn objects(
         let skin = super::skins::object_skin(i, o, &mesh, &mut skins)?;
         locals.push((name, mesh, material, mirror, skin));
     }
-    let mut objects = Vec::new();
+    // Parents by index, then no cycle: one topological walk (a chain of
+    // any length in linear time).
+    let mut parents = Vec::with_capacity(f.objects.len());
     for (i, o) in f.objects.iter().enumerate() {
-        // The parent by index, and no cycle up the chain.
         let index = |p: &String| {
             object_names
                 .get(p)
                 .copied()
                 .ok_or_else(|| anyhow!("objects[{i}].parent: no object named \"{p}\""))
         };
-        let parent = o.parent.as_ref().map(index).transpose()?;
-        let mut up = o.parent.clone();
-        let mut steps = 0;
-        while let Some(p) = up {
-            steps += 1;
-            if steps > f.objects.len() {
-                bail!("objects[{i}].parent: the parent chain is a cycle");
-            }
-            up = f.objects[index(&p)?].parent.clone();
-        }
+        parents.push(o.parent.as_ref().map(index).transpose()?);
+    }
+    if let Err(i) = super::hierarchy::parents_first(&parents) {
+        bail!("objects[{i}].parent: the parent chain is a cycle");
+    }
+    let mut objects = Vec::new();
+    for (i, o) in f.objects.iter().enumerate() {
+        let parent = parents[i];
         objects.push(Object {
             name: locals[i].0.clone(),
             mesh: locals[i].1.clone(),

@@ -251,13 +251,7 @@ impl Scene {
     /// write leaves an existing file as it was.
     pub fn save_as(&self, dest: &Path) -> Result<()> {
         let text = self.to_toml()?;
-        let tmp = dest.with_extension("toml.tmp");
-        std::fs::write(&tmp, text)
-            .and_then(|()| std::fs::rename(&tmp, dest))
-            .map_err(|e| {
-                let _ = std::fs::remove_file(&tmp);
-                anyhow!("cannot write {}: {e}", dest.display())
-            })
+        crate::assets::write::write_file(dest, text.as_bytes())
     }
 }
 

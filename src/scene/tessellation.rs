@@ -100,6 +100,8 @@ pub(super) fn resolve(f: Option<&TessellationFile>, base: &Path) -> Result<Optio
         );
     }
     finite("tessellation.height", &[t.height])?;
+    super::camera_limits::within_world("tessellation.size", &[t.size])?;
+    super::camera_limits::within_world("tessellation.height", &[t.height])?;
     let [far, near] = t.levels;
     if !(far.is_finite() && near.is_finite() && far >= 1.0 && near >= far && near <= MAX_LEVEL) {
         bail!(
@@ -125,6 +127,14 @@ pub(super) fn resolve(f: Option<&TessellationFile>, base: &Path) -> Result<Optio
         bail!(
             "tessellation.displacement: file {} {why}",
             displacement.display()
+        );
+    }
+    // Decoded now, so that a broken map is an error when the scene is read
+    // (not a warning when the pass runs), in printable words.
+    if let Err(e) = crate::gl::image_file::load_rgba8(&displacement) {
+        bail!(
+            "tessellation.displacement: {}",
+            super::text::printable(&format!("{e:#}"))
         );
     }
     Ok(Some(Tessellation {

@@ -9,16 +9,94 @@ use anyhow::{Result, bail};
 /// either of which in a hostile file can be megabytes long.
 pub const MAX_MESSAGE_CHARS: usize = 2000;
 
+/// The longest last line `quoted` keeps whole after a cut: the TOML
+/// parser ends its message with its reason ("cannot recurse further; max
+/// recursion depth met"), after the line it quotes.
+const REASON_CHARS: usize = 300;
+
 /// A message, trimmed, and cut at `MAX_MESSAGE_CHARS` with a note of how
-/// much was left out.
+/// much was left out; a short last line (the parser's reason) is kept
+/// after the cut.
 pub(super) fn quoted(message: &str) -> String {
     let m = message.trim_end();
-    match m.char_indices().nth(MAX_MESSAGE_CHARS) {
-        None => m.to_string(),
+    if m.chars().count() <= MAX_MESSAGE_CHARS {
+        return m.to_string();
+    }
+    let (body, reason) = match m.rsplit_once('\n') {
+        Some((b, last)) if last.chars().count() <= REASON_CHARS => (b, Some(last)),
+        _ => (m, None),
+    };
+    let room = MAX_MESSAGE_CHARS - reason.map_or(0, |r| r.chars().count() + 1);
+    let cut = body.char_indices().nth(room).map_or(body.len(), |(i, _)| i);
+    let mut out = format!(
+        "{}... ({} more characters of the message left out)",
+        &body[..cut],
+        body[cut..].chars().count()
+    );
+    if let Some(r) = reason {
+        out.push('\n');
+        out.push_str(r);
+    }
+    out
+}
+
+/// A message about a binary file's content (an image decoder's) made
+/// printable: a chunk type the decoder shows as `ChunkType { type: ... }`
+/// becomes its bytes in hex, escaped or control characters become `?`,
+/// and a reason the decoder repeats (`A: A`) is said once.
+pub(crate) fn printable(message: &str) -> String {
+    let mut m = message.to_string();
+    while let Some(at) = m.find("ChunkType { type: ") {
+        let end = m[at..].find(" }").map_or(m.len(), |e| at + e + 2);
+        let inner = &m[at + "ChunkType { type: ".len()..end];
+        let ty = inner.split(',').next().unwrap_or("");
+        let hex: Vec<String> = unescape(ty).bytes().map(|b| format!("{b:02x}")).collect();
+        m.replace_range(at..end, &format!("chunk [{}]", hex.join(" ")));
+    }
+    let mut out = String::new();
+    let mut rest = m.as_str();
+    while let Some(at) = rest.find("\\u{") {
+        out.push_str(&rest[..at]);
+        let end = rest[at..].find('}').map_or(rest.len(), |e| at + e + 1);
+        out.push('?');
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    let out: String = out
+        .chars()
+        .map(|c| if c.is_control() && c != '\n' { '?' } else { c })
+        .collect();
+    // "X: Y: Y" -> "X: Y".
+    match out.rsplit_once(": ") {
+        Some((head, last)) if head.ends_with(last) && !last.is_empty() => head.to_string(),
+        _ => out,
+    }
+}
+
+/// The characters Rust's Debug escapes as `\u{4}` back as they were.
+fn unescape(s: &str) -> String {
+    let mut out = String::new();
+    let mut rest = s;
+    while let Some(at) = rest.find("\\u{") {
+        out.push_str(&rest[..at]);
+        let end = rest[at..].find('}').map_or(rest.len(), |e| at + e);
+        let code = u32::from_str_radix(&rest[at + 3..end], 16).ok();
+        out.extend(code.and_then(char::from_u32));
+        rest = &rest[(end + 1).min(rest.len())..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// `s` cut to `n` characters, with a note of how many were left out: a
+/// `--set` the user typed, quoted in a message about it.
+pub(super) fn short(s: &str, n: usize) -> String {
+    match s.char_indices().nth(n) {
+        None => s.to_string(),
         Some((cut, _)) => format!(
-            "{}... ({} more characters of the message left out)",
-            &m[..cut],
-            m[cut..].chars().count()
+            "{}...({} more characters)",
+            &s[..cut],
+            s[cut..].chars().count()
         ),
     }
 }

@@ -25,6 +25,12 @@ impl Scene {
         self.camera_warnings(&mut w);
         self.skybox_warnings(&mut w);
         w.extend(self.file_warnings.iter().cloned());
+        if self.tessellation.is_some() && self.render.path != RenderPath::Forward {
+            w.push(format!(
+                "[tessellation] is not drawn on the {} path: the tessellated terrain is a forward-path pass (render.path = \"forward\" draws it)",
+                self.render.path.name()
+            ));
+        }
         // What loading each skinned mesh's file said, once per file.
         let mut seen = Vec::new();
         for o in &self.objects {

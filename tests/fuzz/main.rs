@@ -13,6 +13,8 @@
 //! * `png`: `gl::texture::load_rgba8` on mutated PNGs (CRCs fixed up or
 //!   not, IHDR sizes made extreme).
 //! * `cli`: `cli::Cli::try_parse_from` on argument vectors.
+//! * `overrides`: `--set` keys of any depth and scene tables nested
+//!   hundreds deep, each property for a bounded time.
 //!
 //! The loaders must not panic and must stay within the memory their own
 //! size caps allow: this binary counts every allocation (`alloc`).
@@ -30,6 +32,7 @@ mod cli;
 mod gltf;
 mod mtl;
 mod obj;
+mod overrides;
 mod png;
 mod regressions;
 mod scene;

@@ -73,6 +73,7 @@ fn every_kept_input_still_holds() {
     // The folders are there and hold something for each kind of input.
     for kind in [
         "scene-mutated",
+        "scene-set",
         "obj-shaped",
         "mtl-mutated",
         "png-mutated",

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 /// The shipped scenes: (path, text).
-fn seeds() -> &'static [(PathBuf, String)] {
+pub fn seeds() -> &'static [(PathBuf, String)] {
     static SEEDS: OnceLock<Vec<(PathBuf, String)>> = OnceLock::new();
     SEEDS.get_or_init(|| {
         let mut v: Vec<(PathBuf, String)> = std::fs::read_dir(root().join("scenes"))
@@ -30,7 +30,7 @@ fn seeds() -> &'static [(PathBuf, String)] {
 
 /// The keys the shipped scenes write, dotted (`render.cutoff`,
 /// `lights[0].intensity`), and their section headers.
-fn vocabulary() -> &'static (Vec<String>, Vec<String>) {
+pub fn vocabulary() -> &'static (Vec<String>, Vec<String>) {
     static WORDS: OnceLock<(Vec<String>, Vec<String>)> = OnceLock::new();
     WORDS.get_or_init(|| {
         let (mut keys, mut sections) = (Vec::new(), Vec::new());
@@ -141,7 +141,7 @@ fn plausible_value() -> impl Strategy<Value = String> {
     ]
 }
 
-fn any_value() -> impl Strategy<Value = String> {
+pub fn any_value() -> impl Strategy<Value = String> {
     prop_oneof![
         4 => plausible_value(),
         3 => proptest::sample::select(hostile_values()),

@@ -1,3 +1,4 @@
 //! Notes 05: multi-pass techniques with the stencil buffer.
 
 pub mod mirror;
+mod mirror_order;

@@ -76,6 +76,7 @@ pub fn material(m: &GltfMaterial, file: &str) -> Material {
         },
         winding: Winding::Ccw,
         texturing: sampled.map_or_else(Texturing::default, texturing),
+        ..Material::default()
     }
 }
 

@@ -45,6 +45,18 @@ use std::time::Instant;
 /// Inputs per property when `GLOSS_FUZZ_CASES` is not set.
 pub const DEFAULT_CASES: u32 = 30_000;
 
+/// Seconds a property tests inputs for when `GLOSS_FUZZ_SECONDS` is not
+/// set: past it, the rest of its inputs are drawn but not tried, so the
+/// suite's time stays bounded whatever an input costs on this machine.
+pub const DEFAULT_SECONDS: u64 = 30;
+
+fn seconds() -> u64 {
+    std::env::var("GLOSS_FUZZ_SECONDS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(DEFAULT_SECONDS)
+}
+
 pub fn cases() -> u32 {
     std::env::var("GLOSS_FUZZ_CASES")
         .ok()
@@ -103,12 +115,21 @@ pub fn run<S: Strategy>(
     let mut runner = TestRunner::new(config);
     ACCEPTED.with(|a| a.set(0));
     let start = Instant::now();
-    let result = runner.run(&strategy, test);
+    let limit = std::time::Duration::from_secs(seconds());
+    let tried = std::cell::Cell::new(0u32);
+    let result = runner.run(&strategy, |input| {
+        if start.elapsed() > limit {
+            return Ok(());
+        }
+        tried.set(tried.get() + 1);
+        test(input)
+    });
     let took = start.elapsed().as_secs_f64();
+    let tried = tried.get();
     match result {
         Ok(()) => println!(
-            "fuzz {name}: {cases} inputs in {took:.2} s ({:.2} ms each), {} accepted, seed {seed}",
-            1e3 * took / f64::from(cases.max(1)),
+            "fuzz {name}: {tried} of {cases} inputs tried in {took:.2} s ({:.2} ms each), {} accepted, seed {seed}",
+            1e3 * took / f64::from(tried.max(1)),
             ACCEPTED.with(std::cell::Cell::get)
         ),
         Err(TestError::Abort(why)) => panic!("fuzz {name}: aborted: {why}"),

@@ -61,8 +61,9 @@ pub struct DemoOptions {
     pub debug: bool,
     /// Exit after this many frames (smoke tests); `None` runs until closed.
     pub frames: Option<u32>,
-    /// Initial window size in pixels.
-    pub size: (u32, u32),
+    /// Initial window size in pixels (None: the scene's render.size
+    /// beside the panel, fitted to the screen).
+    pub size: Option<(u32, u32)>,
     /// `--set KEY=VALUE` overrides of the scene file.
     pub overrides: Vec<String>,
     /// Start with the panel shown.
@@ -73,9 +74,10 @@ pub struct DemoOptions {
 
 /// Open a window on `scene_path` and run until it is closed (or for `options.frames` frames).
 pub fn run(scene_path: &Path, options: DemoOptions) -> Result<()> {
-    let (w, h) = options.size;
-    if w == 0 || h == 0 || w > 16384 || h > 16384 {
-        bail!("the window size must be between 1x1 and 16384x16384, not {w}x{h}");
+    if let Some((w, h)) = options.size
+        && (w == 0 || h == 0 || w > 16384 || h > 16384)
+    {
+        bail!("--window: the window size must be between 1x1 and 16384x16384, not {w}x{h}");
     }
     // Load the scene before opening anything: a bad file fails fast.
     let scene = Scene::load_with(scene_path, &options.overrides)?;
@@ -154,6 +156,9 @@ struct Running {
     /// The fly-mode keys held down.
     held: std::collections::HashSet<char>,
     cursor: Option<PhysicalPosition<f64>>,
+    /// The 3D view's rectangle in the window (x, y from the top left,
+    /// width, height, in pixels): beside the panel, or the whole window.
+    view: [i32; 4],
     title: TitleClock,
     last_swap: Instant,
     /// A screenshot asked for: Some(true) with the panel, Some(false) without.
@@ -178,7 +183,17 @@ impl Demo {
     }
 
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<Running> {
-        let (w, h) = self.options.size;
+        let screen = (event_loop.primary_monitor())
+            .or_else(|| event_loop.available_monitors().next())
+            .map(|m| (m.size().width, m.size().height));
+        let (w, h) = self.options.size.unwrap_or_else(|| {
+            let panel = if self.options.panel {
+                u32::from(panel::PANEL_WIDTH)
+            } else {
+                0
+            };
+            fit_window(self.scene.render.size, panel, screen)
+        });
         let attributes = Window::default_attributes()
             .with_title(format!("gloss — {}", self.scene.name))
             .with_inner_size(PhysicalSize::new(w, h));
@@ -198,6 +213,9 @@ impl Demo {
         )
         .with_context(|| format!("could not set up the renderer for {}", self.scene.name))?;
         let egui = egui_glow::EguiGlow::new(event_loop, ctx.gl.clone(), None, None, true);
+        // No animations: at a few frames a second (llvmpipe) they only
+        // leave the panel half open when a screenshot is taken.
+        egui.egui_ctx.all_styles_mut(|s| s.animation_time = 0.0);
         let mut panel = PanelState::new(&self.scene_path.display().to_string());
         panel.open = self.options.panel;
         panel.pass_times = self.options.pass_times;
@@ -225,6 +243,7 @@ impl Demo {
             fly: false,
             held: Default::default(),
             cursor: None,
+            view: [0, 0, to_i32(w), to_i32(h)],
             title: TitleClock::new(),
             last_swap: Instant::now(),
             screenshot: None,
@@ -244,9 +263,48 @@ impl Demo {
         let Some(run) = self.running.as_mut() else {
             return Ok(());
         };
+        // Who gets the event is decided here, before egui sees it: a key is
+        // the demo's unless a text field is being edited (egui would take
+        // Tab to move its focus); a press belongs to egui over the panel and
+        // to the camera in the view; every release goes to both and ends
+        // every drag of the camera.
+        let editing = run.egui.egui_ctx.text_edit_focused();
+        if let WindowEvent::KeyboardInput { event: key, .. } = &event
+            && !editing
+            && (keys::action(&key.logical_key, false).is_some()
+                || (run.fly && fly_key(&key.logical_key).is_some()))
+        {
+            run.panel_layer.stale = true;
+            return self.demo_key(event_loop, key);
+        }
+        if let WindowEvent::MouseInput {
+            state: ElementState::Pressed,
+            button,
+            ..
+        } = event
+            && run.in_view(run.cursor)
+        {
+            // A click in the view takes the keyboard focus from the panel.
+            run.egui.egui_ctx.memory_mut(|m| m.stop_text_input());
+            run.panel_layer.stale = true;
+            match button {
+                MouseButton::Left => run.left_down = true,
+                MouseButton::Right | MouseButton::Middle => run.pan_down = true,
+                _ => {}
+            }
+            return Ok(());
+        }
+        if let WindowEvent::MouseInput {
+            state: ElementState::Released,
+            ..
+        } = event
+        {
+            run.left_down = false;
+            run.pan_down = false;
+        }
         let to_egui = run.egui.on_window_event(&run.ctx.window, &event);
-        // What egui sees, and any key (Tab, F1, a setting), shows in the panel.
-        if to_egui.repaint || matches!(event, WindowEvent::KeyboardInput { .. }) {
+        // What egui sees shows in the panel.
+        if to_egui.repaint {
             run.panel_layer.stale = true;
         }
         match event {
@@ -254,41 +312,9 @@ impl Demo {
             // A zero size (minimised) keeps the old size until the window comes back.
             WindowEvent::Resized(size) if size.width > 0 && size.height > 0 => {
                 run.ctx.resize(size.width, size.height);
-                run.renderer
-                    .resize(to_i32(size.width), to_i32(size.height))
-                    .context("could not resize the renderer")?;
+                run.panel_layer.stale = true;
             }
             WindowEvent::ModifiersChanged(m) => run.modifiers = m.state(),
-            _ if to_egui.consumed => {}
-            WindowEvent::KeyboardInput { event, .. }
-                if fly_key(&event.logical_key).is_some() && run.fly =>
-            {
-                let k = fly_key(&event.logical_key).expect("checked");
-                if event.state == ElementState::Pressed {
-                    run.held.insert(k);
-                } else {
-                    run.held.remove(&k);
-                }
-            }
-            WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
-                if let Some(a) = keys::action(&event.logical_key, run.modifiers.shift_key()) {
-                    if a == keys::KeyAction::Quit {
-                        event_loop.exit();
-                    } else {
-                        self.key(a);
-                    }
-                }
-            }
-            WindowEvent::MouseInput {
-                button: MouseButton::Left,
-                state,
-                ..
-            } => run.left_down = state == ElementState::Pressed,
-            WindowEvent::MouseInput {
-                button: MouseButton::Right | MouseButton::Middle,
-                state,
-                ..
-            } => run.pan_down = state == ElementState::Pressed,
             WindowEvent::CursorMoved { position, .. } => {
                 if let Some(last) = run.cursor {
                     let (dx, dy) = ((position.x - last.x) as f32, (position.y - last.y) as f32);
@@ -302,13 +328,68 @@ impl Demo {
                 run.cursor = Some(position);
             }
             WindowEvent::CursorLeft { .. } => run.cursor = None,
-            WindowEvent::MouseWheel { delta, .. } => self.orbit.zoom(match delta {
-                MouseScrollDelta::LineDelta(_, y) => y,
-                MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
-            }),
+            WindowEvent::MouseWheel { delta, .. } if run.in_view(run.cursor) => {
+                self.orbit.zoom(match delta {
+                    MouseScrollDelta::LineDelta(_, y) => y,
+                    MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
+                })
+            }
             _ => {}
         }
         Ok(())
+    }
+}
+
+impl Demo {
+    /// A key of the demo's (keys.rs, or a fly-mode key while flying).
+    fn demo_key(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        key: &winit::event::KeyEvent,
+    ) -> Result<()> {
+        let Some(run) = self.running.as_mut() else {
+            return Ok(());
+        };
+        let pressed = key.state == ElementState::Pressed;
+        if run.fly
+            && let Some(k) = fly_key(&key.logical_key)
+        {
+            if pressed {
+                run.held.insert(k);
+            } else {
+                run.held.remove(&k);
+            }
+            return Ok(());
+        }
+        if !pressed {
+            return Ok(());
+        }
+        match keys::action(&key.logical_key, run.modifiers.shift_key()) {
+            Some(keys::KeyAction::Quit) => event_loop.exit(),
+            Some(a) => self.key(a),
+            None => {}
+        }
+        Ok(())
+    }
+}
+
+impl Running {
+    /// Is the pointer at `cursor` over the 3D view (not over the panel, nor
+    /// over one of egui's windows or menus laid over the view)?
+    fn in_view(&self, cursor: Option<PhysicalPosition<f64>>) -> bool {
+        let Some(c) = cursor else {
+            return false;
+        };
+        let [x, y, w, h] = self.view;
+        let inside = c.x >= f64::from(x)
+            && c.y >= f64::from(y)
+            && c.x < f64::from(x + w)
+            && c.y < f64::from(y + h);
+        let ppp = f64::from(self.egui.egui_ctx.pixels_per_point());
+        let at = egui::pos2((c.x / ppp) as f32, (c.y / ppp) as f32);
+        let over_egui = (self.egui.egui_ctx.layer_id_at(at))
+            .is_some_and(|l| l.order != egui::Order::Background);
+        inside && !over_egui
     }
 }
 
@@ -351,6 +432,21 @@ impl ApplicationHandler for Demo {
         }
         self.running = None;
     }
+}
+
+/// The window for a view of the scene's `size` with a panel `panel` pixels
+/// wide beside it, scaled down (keeping its shape) to fit a `screen` of
+/// that size when one is known.
+pub fn fit_window((w, h): (u32, u32), panel: u32, screen: Option<(u32, u32)>) -> (u32, u32) {
+    let (w, h) = (w.max(1) + panel, h.max(1));
+    let Some((sw, sh)) = screen.filter(|&(sw, sh)| sw > 0 && sh > 0) else {
+        return (w, h);
+    };
+    let s = (f64::from(sw) / f64::from(w))
+        .min(f64::from(sh) / f64::from(h))
+        .min(1.0);
+    let fit = |v: u32| ((f64::from(v) * s).floor() as u32).max(1);
+    (fit(w), fit(h))
 }
 
 /// W A S D Q E, the fly-mode keys.

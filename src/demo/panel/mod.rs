@@ -31,6 +31,9 @@ use crate::techniques;
 use help::{help_window, keys_grid};
 use std::path::PathBuf;
 
+/// The panel's width when it opens (egui points).
+pub const PANEL_WIDTH: u16 = 340;
+
 /// What the panel asks the demo to do.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Action {
@@ -118,8 +121,47 @@ pub struct PanelState {
     pub playing: bool,
     /// How fast it plays (1: real time).
     pub speed: f32,
+    /// The view is rendered at this fraction of its size.
+    pub scale: RenderScale,
+    /// The rectangle beside the panel (egui points) at its last drawing:
+    /// the 3D view's.
+    pub view: Option<egui::Rect>,
+    /// What the panel drew at its last drawing (points): the panel, the
+    /// overlay, the help window. egui's own used rectangle is the pass
+    /// before's.
+    pub drawn: egui::Rect,
     path_text: String,
     save_text: String,
+}
+
+/// How much of the view's resolution the frame is rendered at (the rest
+/// made up by scaling it up): for software rasterizers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RenderScale {
+    Full,
+    Half,
+    Quarter,
+}
+
+impl RenderScale {
+    pub const ALL: [RenderScale; 3] = [RenderScale::Full, RenderScale::Half, RenderScale::Quarter];
+
+    /// The view's size is divided by this.
+    pub fn divisor(self) -> i32 {
+        match self {
+            RenderScale::Full => 1,
+            RenderScale::Half => 2,
+            RenderScale::Quarter => 4,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            RenderScale::Full => "1",
+            RenderScale::Half => "1/2",
+            RenderScale::Quarter => "1/4",
+        }
+    }
 }
 
 impl PanelState {
@@ -135,33 +177,42 @@ impl PanelState {
             thumbnails: true,
             playing: true,
             speed: 1.0,
+            scale: RenderScale::Full,
+            // Until the panel is first drawn: the panel at its first width.
+            drawn: egui::Rect::NOTHING,
+            view: Some(egui::Rect::from_min_max(
+                egui::pos2(f32::from(PANEL_WIDTH), 0.0),
+                egui::pos2(f32::INFINITY, f32::INFINITY),
+            )),
             path_text: scene_path.to_string(),
             save_text: "edited.toml".into(),
         }
     }
 
-    /// Draw the panel (and the help overlay) and collect what was asked.
+    /// Draw the panel (and the help overlay) and collect what was asked;
+    /// note the rectangle left beside it for the 3D view (`view`).
     pub fn show(&mut self, ui: &mut egui::Ui, input: &PanelInput) -> Vec<Action> {
         let mut actions = Vec::new();
-        if self.help {
-            help_window(ui, &mut self.help);
+        self.drawn = egui::Rect::NOTHING;
+        if self.help
+            && let Some(r) = help_window(ui, &mut self.help)
+        {
+            self.drawn = r;
         }
         if !self.open {
+            let r = self.overlay(ui, ui.available_rect_before_wrap(), input);
+            self.drawn = self.drawn.union(r);
             return actions;
         }
-        egui::Panel::left("gloss-panel")
-            .default_size(340.0)
+        let panel = egui::Panel::left("gloss-panel")
+            .default_size(f32::from(PANEL_WIDTH))
+            .size_range(220.0..=900.0)
             .resizable(true)
             .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    ui.heading("gloss");
-                    ui.small(input.gl_info);
-                    if let Some(e) = input.error {
-                        ui.colored_label(egui::Color32::from_rgb(255, 110, 90), e);
-                    }
-                    if let Some(s) = input.status {
-                        ui.label(s);
-                    }
+                self.top(ui, input);
+                // Wide content (the plan, long names) scrolls sideways
+                // rather than widening the panel.
+                egui::ScrollArea::both().show(ui, |ui| {
                     self.scene_section(ui, input, &mut actions);
                     self.animation_section(ui, input, &mut actions);
                     self.geometry_section(ui, input, &mut actions);
@@ -179,7 +230,77 @@ impl PanelState {
                         .show(ui, keys_grid);
                 });
             });
+        self.drawn = self.drawn.union(panel.response.rect);
+        // Kept while the panel is hidden: Tab brings it back at this width.
+        self.view = Some(ui.available_rect_before_wrap());
         actions
+    }
+
+    /// The panel's head, outside its scrolling: the frame time, the render
+    /// scale, and one fixed slot for the last error or status (so that a
+    /// message never pushes the widgets below it down).
+    fn top(&mut self, ui: &mut egui::Ui, input: &PanelInput) {
+        ui.horizontal(|ui| {
+            ui.heading("gloss");
+            ui.label(self.frame_time());
+            if ui.small_button("hide (Tab)").clicked() {
+                self.open = false;
+            }
+        });
+        ui.small(input.gl_info);
+        ui.horizontal(|ui| {
+            ui.label("render scale:");
+            for s in RenderScale::ALL {
+                ui.selectable_value(&mut self.scale, s, s.name())
+                    .on_hover_text(
+                        "render the view at this fraction of its pixels, shown scaled up",
+                    );
+            }
+        });
+        let (text, colour) = match (input.error, input.status) {
+            (Some(e), _) => (e, egui::Color32::from_rgb(255, 110, 90)),
+            (None, Some(s)) => (s, ui.visuals().text_color()),
+            (None, None) => ("", ui.visuals().text_color()),
+        };
+        let slot = egui::vec2(
+            ui.available_width(),
+            2.0 * ui.text_style_height(&egui::TextStyle::Body),
+        );
+        ui.allocate_ui_with_layout(slot, egui::Layout::top_down(egui::Align::Min), |ui| {
+            ui.set_min_size(slot);
+            ui.set_max_size(slot);
+            ui.add(egui::Label::new(egui::RichText::new(text).color(colour)).truncate())
+                .on_hover_text(text);
+        });
+        ui.separator();
+    }
+
+    /// With the panel hidden: the frame time, the render scale and how to
+    /// get the panel back, small in the view's top left corner.
+    fn overlay(&self, ui: &egui::Ui, view: egui::Rect, input: &PanelInput) -> egui::Rect {
+        let scale = match self.scale {
+            RenderScale::Full => String::new(),
+            s => format!(" · render scale {}", s.name()),
+        };
+        let error = input.error.map(|e| format!("\n{e}")).unwrap_or_default();
+        egui::Area::new(egui::Id::unique("gloss-overlay"))
+            .fixed_pos(view.min + egui::vec2(6.0, 6.0))
+            .interactable(false)
+            .show(ui.ctx(), |ui| {
+                egui::Frame::popup(ui.style()).show(ui, |ui| {
+                    ui.small(format!("{}{scale} · Tab: panel{error}", self.frame_time()));
+                });
+            })
+            .response
+            .rect
+    }
+
+    /// "12.3 ms (81 fps)": the median of the last frames, swap to swap.
+    fn frame_time(&self) -> String {
+        match self.timings.median() {
+            Some(ms) => format!("{ms:.1} ms ({:.0} fps)", 1000.0 / ms.max(1e-3)),
+            None => "– ms".into(),
+        }
     }
 
     fn scene_section(&mut self, ui: &mut egui::Ui, input: &PanelInput, actions: &mut Vec<Action>) {

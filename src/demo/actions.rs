@@ -190,10 +190,11 @@ impl Demo {
     pub(super) fn key(&mut self, key: KeyAction) {
         let mut settings = self.scene.render.clone();
         let action = match key {
-            KeyAction::TogglePanel | KeyAction::Help | KeyAction::Fly => {
+            KeyAction::TogglePanel | KeyAction::Help | KeyAction::Fly | KeyAction::NextScale => {
                 if let Some(run) = self.running.as_mut() {
                     match key {
                         KeyAction::Help => run.panel.help = !run.panel.help,
+                        KeyAction::NextScale => run.panel.scale = run.panel.scale.next(),
                         KeyAction::Fly => {
                             run.fly = !run.fly;
                             run.held.clear();

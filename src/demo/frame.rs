@@ -199,6 +199,7 @@ impl Demo {
             size: (run.renderer.width, run.renderer.height),
             gl_info: &run.gl_info,
             stretch,
+            volumes: volume_count(&run.renderer),
         };
         let mut actions = Vec::new();
         let panel = &mut run.panel;
@@ -282,11 +283,7 @@ pub(super) fn view_rect(panel: &super::panel::PanelState, ppp: f32, w: u32, h: u
 /// The inspector's views: the shadow maps, the plan's targets, the light
 /// volumes, and the difference image of the last comparison.
 pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
-    let r = &run.renderer;
-    let shadows = ShadowView::of(r.shadows().maps.iter().map(|(c, _)| c), |i| {
-        r.scene.lights[i].kind
-    });
-    let mut views = inspector::views(&r.plan, has_volumes(r), &shadows);
+    let mut views = frame_views(&run.renderer);
     if run.comparison.is_some()
         && let Some(first) = views.first().cloned()
     {
@@ -302,14 +299,35 @@ pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
             ..first
         });
     }
+    views
+}
+
+/// The views the inspector offers for `r`'s frame: its casting lights'
+/// shadow maps, its plan's targets (the post chain's named by their step),
+/// and the light volumes when the frame draws them.
+pub fn frame_views(r: &crate::renderer::Renderer) -> Vec<inspector::View> {
+    let shadows = ShadowView::of(r.shadows().maps.iter().map(|(c, _)| c), |i| {
+        r.scene.lights[i].kind
+    });
+    let mut views = inspector::views(&r.plan, has_volumes(r), &shadows);
     super::post_chain::name_steps(&mut views, &r.scene, &r.plan);
     views
 }
 
-/// Does some light of the frame have a volume (a sphere or a cone)?
+/// Does this frame draw light volumes (a light-volume pass runs, notes 04
+/// and 05) and has some light one (a sphere or a cone)? Only then are the
+/// volume views offered.
 pub(super) fn has_volumes(r: &crate::renderer::Renderer) -> bool {
-    r.lights()
-        .lights
-        .iter()
-        .any(|l| l.volume != crate::frame::lights::Volume::FullScreen)
+    let drawn = (r.plan.passes.iter()).any(|p| {
+        let name = crate::techniques::ALL.get(p.technique).map(|t| t.name);
+        matches!(name, Some("light_volumes" | "stencil_light_volumes"))
+    });
+    drawn && volume_count(r) > 0
+}
+
+/// How many lights have a volume (the overdraw view's hottest count).
+pub(super) fn volume_count(r: &crate::renderer::Renderer) -> usize {
+    (r.lights().lights.iter())
+        .filter(|l| l.volume != crate::frame::lights::Volume::FullScreen)
+        .count()
 }

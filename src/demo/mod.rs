@@ -28,6 +28,7 @@ pub mod pictures;
 pub mod post_chain;
 mod present;
 
+pub use frame::frame_views;
 pub use present::restore_after_egui;
 mod screenshot;
 mod shaders;

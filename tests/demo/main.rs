@@ -8,6 +8,7 @@ mod common;
 mod animation;
 mod compare;
 mod driver;
+mod inspector_truth;
 mod panel;
 mod pictures;
 mod post_chain;

@@ -12,6 +12,7 @@ mod animation;
 mod geometry;
 mod help;
 mod knob;
+mod legend;
 mod post_chain;
 mod post_params;
 mod shadow_knobs;
@@ -101,6 +102,8 @@ pub struct PanelInput<'a> {
     /// The least and greatest value below 1.0 that the shadow-map view
     /// shown stretches to black and white.
     pub stretch: Option<(f32, f32)>,
+    /// How many lights have a volume (the overdraw view's hottest count).
+    pub volumes: usize,
 }
 
 /// What the panel remembers between frames.
@@ -153,6 +156,15 @@ impl RenderScale {
             RenderScale::Half => 2,
             RenderScale::Quarter => 4,
         }
+    }
+
+    /// The one after it, the last followed by the first (F2).
+    pub fn next(self) -> RenderScale {
+        let i = RenderScale::ALL
+            .iter()
+            .position(|&s| s == self)
+            .unwrap_or(0);
+        RenderScale::ALL[(i + 1) % RenderScale::ALL.len()]
     }
 
     pub fn name(self) -> &'static str {
@@ -253,7 +265,7 @@ impl PanelState {
             for s in RenderScale::ALL {
                 ui.selectable_value(&mut self.scale, s, s.name())
                     .on_hover_text(
-                        "render the view at this fraction of its pixels, shown scaled up",
+                        "render the view at this fraction of its pixels, shown scaled up (F2)",
                     );
             }
         });
@@ -288,7 +300,8 @@ impl PanelState {
             .interactable(false)
             .show(ui.ctx(), |ui| {
                 egui::Frame::popup(ui.style()).show(ui, |ui| {
-                    ui.small(format!("{}{scale} · Tab: panel{error}", self.frame_time()));
+                    let text = format!("{}{scale} · Tab: panel{error}", self.frame_time());
+                    ui.add(egui::Label::new(egui::RichText::new(text).small()).extend());
                 });
             })
             .response
@@ -446,6 +459,9 @@ impl PanelState {
                 });
                 if let Some(c) = input.comparison {
                     ui.label(c);
+                }
+                if let Some(v) = current.and_then(|i| input.views.get(i)) {
+                    legend::show(ui, v, input);
                 }
                 if let Some(s) = current.and_then(|i| input.views.get(i)?.shadow) {
                     let n = s.resolution;

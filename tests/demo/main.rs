@@ -10,6 +10,7 @@ mod compare;
 mod driver;
 mod inspector_truth;
 mod panel;
+mod pass_names;
 mod pictures;
 mod post_chain;
 mod robustness;

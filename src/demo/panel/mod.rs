@@ -231,7 +231,8 @@ impl PanelState {
                     technique_section(ui, input, &mut actions);
                     post_chain::section(ui, input, &mut actions);
                     self.inspector_section(ui, input, &mut actions);
-                    self.timings.show(ui, input.times, &mut self.pass_times);
+                    self.timings
+                        .show(ui, input.plan, input.times, &mut self.pass_times);
                     egui::CollapsingHeader::new("Frame plan")
                         .default_open(false)
                         .show(ui, |ui| {
@@ -447,7 +448,8 @@ impl PanelState {
                             .text("stencil after pass (0: end of frame)"),
                     );
                     if let Some(p) = self.stencil_after.checked_sub(1).and_then(|i| passes.get(i)) {
-                        ui.small(format!("{}. {} (view {}): {}", self.stencil_after, p.name, p.view, p.draws));
+                        let title = input.plan.title(self.stencil_after - 1);
+                        ui.small(format!("{}. {title}: {}", self.stencil_after, p.draws));
                     }
                 }
                 ui.horizontal(|ui| {

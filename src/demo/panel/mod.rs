@@ -10,7 +10,9 @@
 
 mod animation;
 mod geometry;
+mod head;
 mod help;
+mod inspector;
 mod knob;
 mod legend;
 mod post_chain;
@@ -21,6 +23,7 @@ mod timings;
 mod values;
 
 pub use animation::advance;
+pub use head::RenderScale;
 pub use shadow_knobs::too_many_casters;
 pub use timings::Timings;
 
@@ -137,45 +140,6 @@ pub struct PanelState {
     save_text: String,
 }
 
-/// How much of the view's resolution the frame is rendered at (the rest
-/// made up by scaling it up): for software rasterizers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum RenderScale {
-    Full,
-    Half,
-    Quarter,
-}
-
-impl RenderScale {
-    pub const ALL: [RenderScale; 3] = [RenderScale::Full, RenderScale::Half, RenderScale::Quarter];
-
-    /// The view's size is divided by this.
-    pub fn divisor(self) -> i32 {
-        match self {
-            RenderScale::Full => 1,
-            RenderScale::Half => 2,
-            RenderScale::Quarter => 4,
-        }
-    }
-
-    /// The one after it, the last followed by the first (F2).
-    pub fn next(self) -> RenderScale {
-        let i = RenderScale::ALL
-            .iter()
-            .position(|&s| s == self)
-            .unwrap_or(0);
-        RenderScale::ALL[(i + 1) % RenderScale::ALL.len()]
-    }
-
-    pub fn name(self) -> &'static str {
-        match self {
-            RenderScale::Full => "1",
-            RenderScale::Half => "1/2",
-            RenderScale::Quarter => "1/4",
-        }
-    }
-}
-
 impl PanelState {
     pub fn new(scene_path: &str) -> PanelState {
         PanelState {
@@ -249,74 +213,6 @@ impl PanelState {
         actions
     }
 
-    /// The panel's head, outside its scrolling: the frame time, the render
-    /// scale, and one fixed slot for the last error or status (so that a
-    /// message never pushes the widgets below it down).
-    fn top(&mut self, ui: &mut egui::Ui, input: &PanelInput) {
-        ui.horizontal(|ui| {
-            ui.heading("gloss");
-            ui.label(self.frame_time());
-            if ui.small_button("hide (Tab)").clicked() {
-                self.open = false;
-            }
-        });
-        ui.small(input.gl_info);
-        ui.horizontal(|ui| {
-            ui.label("render scale:");
-            for s in RenderScale::ALL {
-                ui.selectable_value(&mut self.scale, s, s.name())
-                    .on_hover_text(
-                        "render the view at this fraction of its pixels, shown scaled up (F2)",
-                    );
-            }
-        });
-        let (text, colour) = match (input.error, input.status) {
-            (Some(e), _) => (e, egui::Color32::from_rgb(255, 110, 90)),
-            (None, Some(s)) => (s, ui.visuals().text_color()),
-            (None, None) => ("", ui.visuals().text_color()),
-        };
-        let slot = egui::vec2(
-            ui.available_width(),
-            2.0 * ui.text_style_height(&egui::TextStyle::Body),
-        );
-        ui.allocate_ui_with_layout(slot, egui::Layout::top_down(egui::Align::Min), |ui| {
-            ui.set_min_size(slot);
-            ui.set_max_size(slot);
-            ui.add(egui::Label::new(egui::RichText::new(text).color(colour)).truncate())
-                .on_hover_text(text);
-        });
-        ui.separator();
-    }
-
-    /// With the panel hidden: the frame time, the render scale and how to
-    /// get the panel back, small in the view's top left corner.
-    fn overlay(&self, ui: &egui::Ui, view: egui::Rect, input: &PanelInput) -> egui::Rect {
-        let scale = match self.scale {
-            RenderScale::Full => String::new(),
-            s => format!(" · render scale {}", s.name()),
-        };
-        let error = input.error.map(|e| format!("\n{e}")).unwrap_or_default();
-        egui::Area::new(egui::Id::unique("gloss-overlay"))
-            .fixed_pos(view.min + egui::vec2(6.0, 6.0))
-            .interactable(false)
-            .show(ui.ctx(), |ui| {
-                egui::Frame::popup(ui.style()).show(ui, |ui| {
-                    let text = format!("{}{scale} · Tab: panel{error}", self.frame_time());
-                    ui.add(egui::Label::new(egui::RichText::new(text).small()).extend());
-                });
-            })
-            .response
-            .rect
-    }
-
-    /// "12.3 ms (81 fps)": the median of the last frames, swap to swap.
-    fn frame_time(&self) -> String {
-        match self.timings.median() {
-            Some(ms) => format!("{ms:.1} ms ({:.0} fps)", 1000.0 / ms.max(1e-3)),
-            None => "– ms".into(),
-        }
-    }
-
     fn scene_section(&mut self, ui: &mut egui::Ui, input: &PanelInput, actions: &mut Vec<Action>) {
         egui::CollapsingHeader::new("Scene")
             .default_open(true)
@@ -386,100 +282,6 @@ impl PanelState {
                 }
                 if let Some(c) = values::camera(ui, &input.scene.camera) {
                     actions.push(Action::Camera(c));
-                }
-            });
-    }
-
-    fn inspector_section(
-        &mut self,
-        ui: &mut egui::Ui,
-        input: &PanelInput,
-        actions: &mut Vec<Action>,
-    ) {
-        egui::CollapsingHeader::new("Pass inspector")
-            .default_open(true)
-            .show(ui, |ui| {
-                let current = self.inspect;
-                let label = |i: Option<usize>| match i {
-                    None => "output: the final image".to_string(),
-                    Some(i) => input.views.get(i).map(View::label).unwrap_or_default(),
-                };
-                egui::ComboBox::from_id_salt("inspector")
-                    .width(300.0)
-                    .selected_text(label(current))
-                    .show_ui(ui, |ui| {
-                        for i in std::iter::once(None).chain((0..input.views.len()).map(Some)) {
-                            if ui.selectable_label(current == i, label(i)).clicked() {
-                                actions.push(Action::Inspect(i));
-                            }
-                        }
-                    });
-                ui.checkbox(&mut self.thumbnails, "thumbnails (click one to view it)");
-                if self.thumbnails {
-                    egui::ScrollArea::horizontal().show(ui, |ui| {
-                        ui.horizontal(|ui| {
-                            for (i, t) in input.thumbnails.iter().enumerate() {
-                                let Some(t) = t else { continue };
-                                let image = egui::Image::from_texture(t)
-                                    .fit_to_exact_size(egui::vec2(96.0, 54.0))
-                                    .sense(egui::Sense::click());
-                                let r = ui.add(image).on_hover_text(
-                                    input.views.get(i).map(View::label).unwrap_or_default(),
-                                );
-                                if r.clicked() {
-                                    actions.push(Action::Inspect(Some(i)));
-                                }
-                            }
-                        });
-                    });
-                }
-                ui.add(
-                    egui::Slider::new(&mut self.exposure, 0.01..=100.0)
-                        .logarithmic(true)
-                        .text("exposure (light views)"),
-                );
-                if current.and_then(|i| input.views.get(i)).is_some_and(|v| v.stencil) {
-                    // The stencil as any pass left it (the frame is drawn
-                    // again up to that pass).
-                    let passes = &input.plan.passes;
-                    self.stencil_after = self.stencil_after.min(passes.len());
-                    ui.add(
-                        egui::Slider::new(&mut self.stencil_after, 0..=passes.len())
-                            .text("stencil after pass (0: end of frame)"),
-                    );
-                    if let Some(p) = self.stencil_after.checked_sub(1).and_then(|i| passes.get(i)) {
-                        let title = input.plan.title(self.stencil_after - 1);
-                        ui.small(format!("{}. {title}: {}", self.stencil_after, p.draws));
-                    }
-                }
-                ui.horizontal(|ui| {
-                    if ui.button("compare with reference").on_hover_text(
-                        "render forward with the same camera and size; show RMSE, max and the difference (a view above)",
-                    ).clicked() {
-                        actions.push(Action::Compare);
-                    }
-                });
-                if let Some(c) = input.comparison {
-                    ui.label(c);
-                }
-                if let Some(v) = current.and_then(|i| input.views.get(i)) {
-                    legend::show(ui, v, input);
-                }
-                if let Some(s) = current.and_then(|i| input.views.get(i)?.shadow) {
-                    let n = s.resolution;
-                    let (lo, hi) = input.stretch.unwrap_or((0.0, 1.0));
-                    ui.small(format!(
-                        "light {}'s map, {n} x {n}{} DEPTH_COMPONENT32F: black {lo:.4}, white {hi:.4}",
-                        s.light,
-                        if s.cube() { " x 6" } else { "" }
-                    ));
-                } else if let Some(v) = current.and_then(|i| input.views.get(i)) {
-                    let fb = input
-                        .plan
-                        .target(v.target)
-                        .map(|t| t.attachments().join(", "));
-                    let (w, h) = input.size;
-                    ui.small(format!("{} ({w}x{h}): {}", v.target, fb.unwrap_or_default()));
                 }
             });
     }

@@ -39,6 +39,10 @@ pub struct Cli {
     /// Demo: do not time each pass (glFinish after every pass) while the panel is shown.
     #[arg(long)]
     pub no_pass_times: bool,
+    /// Demo: the window's size, WIDTHxHEIGHT (default: the scene's
+    /// render.size beside the panel, fitted to the screen).
+    #[arg(long, value_name = "WxH", value_parser = crate::bench::parse_size)]
+    pub window: Option<(u32, u32)>,
     /// Demo: exit after this many frames (smoke tests).
     #[arg(long)]
     pub frames: Option<u32>,

@@ -120,7 +120,13 @@ fn run(mut cli: Cli) -> Result<()> {
             let want_window = match cli.backend {
                 Some(Backend::Window) => true,
                 Some(_) => false,
-                None => gloss::gl::window::display_available(),
+                None => match gloss::gl::window::display_problem() {
+                    None => true,
+                    Some(why) => {
+                        eprintln!("gloss: cannot open a window: {why}");
+                        false
+                    }
+                },
             };
             if want_window {
                 gloss::demo::run(
@@ -128,7 +134,7 @@ fn run(mut cli: Cli) -> Result<()> {
                     gloss::demo::DemoOptions {
                         debug: cli.debug,
                         frames: cli.frames,
-                        size: (1280, 720),
+                        size: cli.window,
                         overrides: cli.set.clone(),
                         panel: !cli.no_panel,
                         pass_times: !cli.no_pass_times,
@@ -141,7 +147,7 @@ fn run(mut cli: Cli) -> Result<()> {
                 let backend = headless_backend(cli.backend)?;
                 render_to_png(&scene, backend, cli.debug, &out, None, None)?;
                 println!(
-                    "no display: rendered {} headless ({backend}) to {}",
+                    "gloss: rendered {} headless ({backend}) instead, to {}",
                     scene_path.display(),
                     out.display()
                 );

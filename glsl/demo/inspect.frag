@@ -5,6 +5,7 @@
 //   1 normal: n * 0.5 + 0.5                2 shininess: alpha / 256
 //   3 HDR light: exposure x value, encoded  4 depth, linearised near..far
 //   5 a count (volumes over a pixel) as a heat map, u_scale the hottest
+//   6 one channel (R) in grey: 0 black, 1 white
 // u_level picks the mip level (0: the image itself), stretched over the view.
 #include "common/lighting_output.glsl"
 uniform sampler2D u_texture;
@@ -39,6 +40,8 @@ void main() {
         c = srgb_encode(t.rgb * u_exposure);
     } else if (u_mode == 5) {
         c = heat(t.r / u_scale);
+    } else if (u_mode == 6) {
+        c = vec3(clamp(t.r, 0.0, 1.0));
     } else {
         // Window depth d in [0, 1] back to eye distance, then to [0, 1] over near..far.
         float z = t.r * 2.0 - 1.0;

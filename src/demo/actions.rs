@@ -6,7 +6,7 @@
 use super::keys::KeyAction;
 use super::panel::Action;
 use super::shaders::shader_names;
-use super::{Demo, compare, modified, to_i32};
+use super::{Demo, compare, modified};
 use crate::assets;
 use crate::renderer::Renderer;
 use crate::scene::{Light, RenderPath, Scene, Shading, validate_attenuation};
@@ -190,10 +190,11 @@ impl Demo {
     pub(super) fn key(&mut self, key: KeyAction) {
         let mut settings = self.scene.render.clone();
         let action = match key {
-            KeyAction::TogglePanel | KeyAction::Help | KeyAction::Fly => {
+            KeyAction::TogglePanel | KeyAction::Help | KeyAction::Fly | KeyAction::NextScale => {
                 if let Some(run) = self.running.as_mut() {
                     match key {
                         KeyAction::Help => run.panel.help = !run.panel.help,
+                        KeyAction::NextScale => run.panel.scale = run.panel.scale.next(),
                         KeyAction::Fly => {
                             run.fly = !run.fly;
                             run.held.clear();
@@ -265,20 +266,14 @@ impl Demo {
         Ok(())
     }
 
-    /// A new renderer for `scene` at the window's size; the old one stays on error.
+    /// A new renderer for `scene` at the view's size; the old one stays on error.
     pub(super) fn rebuild(&mut self, scene: &Scene) -> Result<()> {
         let Some(run) = self.running.as_mut() else {
             return Ok(());
         };
-        let (w, h) = run.ctx.size();
-        let renderer = Renderer::new(
-            &run.ctx.gl,
-            &run.ctx.debug,
-            scene,
-            &self.sources,
-            to_i32(w.max(1)),
-            to_i32(h.max(1)),
-        )?;
+        // At the view's size, as the old one was (src/demo/frame.rs).
+        let (w, h) = (run.renderer.width, run.renderer.height);
+        let renderer = Renderer::new(&run.ctx.gl, &run.ctx.debug, scene, &self.sources, w, h)?;
         run.renderer = renderer;
         Ok(())
     }

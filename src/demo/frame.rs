@@ -53,6 +53,14 @@ impl Demo {
         let Some(run) = self.running.as_mut() else {
             return Ok(false);
         };
+        // The 3D view's rectangle (beside the panel, or the whole window)
+        // and the frame rendered at its size, or at 1/2 or 1/4 of it.
+        run.view = view_rect(&run.panel, run.egui.egui_ctx.pixels_per_point(), w, h);
+        let [_, _, vw, vh] = run.view;
+        let s = run.panel.scale.divisor();
+        run.renderer
+            .resize(((vw + s - 1) / s).max(1), ((vh + s - 1) / s).max(1))
+            .map_err(|e| e.context("could not resize the renderer to the view"))?;
         let camera = self.orbit.camera();
         // Pass times are measured (glFinish after each pass) while the panel shows them.
         run.renderer.timing = run.panel.open && run.panel.pass_times;
@@ -138,11 +146,12 @@ impl Demo {
                 fb
             }
         };
-        present::present(&run.ctx, shown, to_i32(w), to_i32(h))?;
-        // 2. A screenshot shows the frame without the panel, unless asked.
+        present::present(&run.ctx, shown, run.view, to_i32(h))?;
+        // 2. A screenshot shows the view without the panel, unless asked.
         if run.screenshot == Some(false) {
             run.screenshot = None;
-            let shot = screenshot::save(&run.ctx.gl, w, h);
+            let [x, y, vw, vh] = run.view;
+            let shot = screenshot::save(&run.ctx.gl, [x, to_i32(h) - y - vh, vw, vh]);
             self.note_screenshot(shot);
         }
         let Some(run) = self.running.as_mut() else {
@@ -190,14 +199,21 @@ impl Demo {
             size: (run.renderer.width, run.renderer.height),
             gl_info: &run.gl_info,
             stretch,
+            volumes: volume_count(&run.renderer),
         };
         let mut actions = Vec::new();
         let panel = &mut run.panel;
         run.egui
             .run(&run.ctx.window, |ui| actions = panel.show(ui, &input));
-        let used = run.egui.egui_ctx.globally_used_rect();
+        // What was drawn this pass, and what egui drew the pass before (a
+        // menu open over the view).
+        let used = (run.egui.egui_ctx.globally_used_rect()).union(run.panel.drawn);
         let ppp = run.egui.egui_ctx.pixels_per_point();
         run.panel_layer.set_area(used, ppp, lh);
+        // egui animates (a panel sliding open): draw it again next frame.
+        if run.egui.egui_ctx.has_requested_repaint() {
+            run.panel_layer.stale = true;
+        }
         run.panel_layer.begin(&run.ctx.gl, lw, lh)?;
         run.egui.paint(&run.ctx.window);
         present::restore_after_egui(&run.ctx.gl);
@@ -209,7 +225,7 @@ impl Demo {
         run.ctx.debug.check(&run.ctx.gl, "drawing the panel")?;
         if run.screenshot == Some(true) {
             run.screenshot = None;
-            let shot = screenshot::save(&run.ctx.gl, w, h);
+            let shot = screenshot::save(&run.ctx.gl, [0, 0, lw, lh]);
             self.note_screenshot(shot);
         }
         for a in actions {
@@ -252,14 +268,22 @@ impl Demo {
     }
 }
 
+/// The 3D view's rectangle in a `w` x `h` window (x, y from the top left,
+/// width, height, in pixels): right of the panel while it is shown, else
+/// the whole window.
+pub(super) fn view_rect(panel: &super::panel::PanelState, ppp: f32, w: u32, h: u32) -> [i32; 4] {
+    let (w, h) = (to_i32(w), to_i32(h));
+    let x = match panel.view {
+        Some(rect) if panel.open => ((rect.min.x * ppp).round() as i32).clamp(0, w - 1),
+        _ => 0,
+    };
+    [x, 0, w - x, h]
+}
+
 /// The inspector's views: the shadow maps, the plan's targets, the light
 /// volumes, and the difference image of the last comparison.
 pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
-    let r = &run.renderer;
-    let shadows = ShadowView::of(r.shadows().maps.iter().map(|(c, _)| c), |i| {
-        r.scene.lights[i].kind
-    });
-    let mut views = inspector::views(&r.plan, has_volumes(r), &shadows);
+    let mut views = frame_views(&run.renderer);
     if run.comparison.is_some()
         && let Some(first) = views.first().cloned()
     {
@@ -275,14 +299,35 @@ pub(super) fn all_views(run: &super::Running) -> Vec<inspector::View> {
             ..first
         });
     }
+    views
+}
+
+/// The views the inspector offers for `r`'s frame: its casting lights'
+/// shadow maps, its plan's targets (the post chain's named by their step),
+/// and the light volumes when the frame draws them.
+pub fn frame_views(r: &crate::renderer::Renderer) -> Vec<inspector::View> {
+    let shadows = ShadowView::of(r.shadows().maps.iter().map(|(c, _)| c), |i| {
+        r.scene.lights[i].kind
+    });
+    let mut views = inspector::views(&r.plan, has_volumes(r), &shadows);
     super::post_chain::name_steps(&mut views, &r.scene, &r.plan);
     views
 }
 
-/// Does some light of the frame have a volume (a sphere or a cone)?
+/// Does this frame draw light volumes (a light-volume pass runs, notes 04
+/// and 05) and has some light one (a sphere or a cone)? Only then are the
+/// volume views offered.
 pub(super) fn has_volumes(r: &crate::renderer::Renderer) -> bool {
-    r.lights()
-        .lights
-        .iter()
-        .any(|l| l.volume != crate::frame::lights::Volume::FullScreen)
+    let drawn = (r.plan.passes.iter()).any(|p| {
+        let name = crate::techniques::ALL.get(p.technique).map(|t| t.name);
+        matches!(name, Some("light_volumes" | "stencil_light_volumes"))
+    });
+    drawn && volume_count(r) > 0
+}
+
+/// How many lights have a volume (the overdraw view's hottest count).
+pub(super) fn volume_count(r: &crate::renderer::Renderer) -> usize {
+    (r.lights().lights.iter())
+        .filter(|l| l.volume != crate::frame::lights::Volume::FullScreen)
+        .count()
 }

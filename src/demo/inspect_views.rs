@@ -22,6 +22,8 @@ pub enum Mode {
     },
     Normal,
     Shininess,
+    /// One channel (R) in grey, 0 black and 1 white.
+    Grey,
     /// HDR light, scaled by the exposure.
     Light,
     Depth,
@@ -117,10 +119,19 @@ impl View {
                 format_name(self.format)
             );
         }
+        if let Some(holds) = holds(self.target, self.attachment) {
+            return format!(
+                "{}.{} ({}): {holds}",
+                self.target,
+                self.attachment,
+                format_name(self.format)
+            );
+        }
         let shows = match self.mode {
             Mode::Color { .. } => "colour",
             Mode::Normal => "normal x 0.5 + 0.5",
             Mode::Shininess => "shininess / 256",
+            Mode::Grey => "one channel (R) in grey, 0 black, 1 white",
             Mode::Light => "light x exposure",
             Mode::Depth => "depth, linearised",
             Mode::Count { .. } => "count, as a heat map",
@@ -136,6 +147,32 @@ impl View {
             self.attachment,
             format_name(self.format)
         )
+    }
+}
+
+/// What an attachment holds, by the name its technique gives it in the
+/// plan, where that says more than its format: the G-buffer's microfacet
+/// triple (notes 03, Geometry Pass) is not light, the SSAO target holds
+/// one channel.
+pub fn holds(target: &str, attachment: &str) -> Option<&'static str> {
+    Some(match attachment {
+        "alpha" => "the microfacet triple (alpha, eta, k_s) as r, g, b, stored values",
+        "convert" => "gConvert: 1 where gAlpha's element holds a Phong value to convert",
+        "ao" => "ambient occlusion, one channel (R), in grey: 0 black, 1 white",
+        "albedo" if target == "gbuffer" => "albedo (diffuse colour)",
+        "specular" if target == "gbuffer" => "specular colour",
+        _ => return None,
+    })
+}
+
+/// The mode a named attachment is shown in, where its name decides it.
+fn mode_of(attachment: &str) -> Option<Mode> {
+    match attachment {
+        // Stored values, not light: no exposure, no encoding.
+        "alpha" | "convert" => Some(Mode::Color { encode: false }),
+        // One channel: red alone would read as a colour.
+        "ao" => Some(Mode::Grey),
+        _ => None,
     }
 }
 
@@ -175,6 +212,10 @@ pub fn views(plan: &FramePlan, has_volumes: bool, shadows: &[ShadowView]) -> Vec
                         attachment: "shininess",
                         ..color(Mode::Shininess)
                     });
+                }
+                _ if let Some(mode) = mode_of(name) => v.push(color(mode)),
+                _ if matches!(format, glow::R8 | glow::R16F | glow::R32F) => {
+                    v.push(color(Mode::Grey))
                 }
                 _ if matches!(format, glow::RGBA16F | glow::RGBA32F) => v.push(color(Mode::Light)),
                 _ => v.push(color(Mode::Color {

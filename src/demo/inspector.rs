@@ -141,6 +141,7 @@ impl Inspector {
             Mode::Light => (3, false, 1.0),
             Mode::Depth => (4, false, 1.0),
             Mode::Count { scale } => (5, false, scale),
+            Mode::Grey => (6, false, 1.0),
         };
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(into.id));

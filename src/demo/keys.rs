@@ -10,6 +10,10 @@ pub const KEYS: &[(&str, &str)] = &[
     ("Shift+F12", "screenshot with the panel"),
     ("F5", "reload the scene file"),
     (
+        "F2",
+        "render scale: 1, 1/2, 1/4 of the view's pixels (shown scaled up)",
+    ),
+    (
         "1 2 3 4",
         "lighting path: forward, deferred, volumes, prepass",
     ),
@@ -34,6 +38,8 @@ pub enum KeyAction {
     /// A screenshot; `true`: with the panel.
     Screenshot(bool),
     Reload,
+    /// The next render scale (1, 1/2, 1/4).
+    NextScale,
     Path(usize),
     NextShading,
     ToggleStencil,
@@ -51,6 +57,7 @@ pub fn action(key: &winit::keyboard::Key, shift: bool) -> Option<KeyAction> {
         Key::Named(NamedKey::F1) => KeyAction::Help,
         Key::Named(NamedKey::F12) => KeyAction::Screenshot(shift),
         Key::Named(NamedKey::F5) => KeyAction::Reload,
+        Key::Named(NamedKey::F2) => KeyAction::NextScale,
         Key::Named(NamedKey::Escape) => KeyAction::Quit,
         Key::Character(c) => match c.to_lowercase().as_str() {
             "p" => KeyAction::Screenshot(shift),

@@ -18,6 +18,7 @@ mod actions;
 mod clock;
 pub mod compare;
 mod frame;
+mod input;
 mod inspect_views;
 pub mod inspector;
 mod keys;
@@ -28,6 +29,7 @@ pub mod pictures;
 pub mod post_chain;
 mod present;
 
+pub use frame::frame_views;
 pub use present::restore_after_egui;
 mod screenshot;
 mod shaders;
@@ -50,7 +52,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 use winit::application::ApplicationHandler;
 use winit::dpi::{PhysicalPosition, PhysicalSize};
-use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
+use winit::event::WindowEvent;
 use winit::event_loop::{ActiveEventLoop, ControlFlow};
 use winit::window::{Window, WindowId};
 
@@ -61,8 +63,9 @@ pub struct DemoOptions {
     pub debug: bool,
     /// Exit after this many frames (smoke tests); `None` runs until closed.
     pub frames: Option<u32>,
-    /// Initial window size in pixels.
-    pub size: (u32, u32),
+    /// Initial window size in pixels (None: the scene's render.size
+    /// beside the panel, fitted to the screen).
+    pub size: Option<(u32, u32)>,
     /// `--set KEY=VALUE` overrides of the scene file.
     pub overrides: Vec<String>,
     /// Start with the panel shown.
@@ -73,9 +76,10 @@ pub struct DemoOptions {
 
 /// Open a window on `scene_path` and run until it is closed (or for `options.frames` frames).
 pub fn run(scene_path: &Path, options: DemoOptions) -> Result<()> {
-    let (w, h) = options.size;
-    if w == 0 || h == 0 || w > 16384 || h > 16384 {
-        bail!("the window size must be between 1x1 and 16384x16384, not {w}x{h}");
+    if let Some((w, h)) = options.size
+        && (w == 0 || h == 0 || w > 16384 || h > 16384)
+    {
+        bail!("--window: the window size must be between 1x1 and 16384x16384, not {w}x{h}");
     }
     // Load the scene before opening anything: a bad file fails fast.
     let scene = Scene::load_with(scene_path, &options.overrides)?;
@@ -154,6 +158,9 @@ struct Running {
     /// The fly-mode keys held down.
     held: std::collections::HashSet<char>,
     cursor: Option<PhysicalPosition<f64>>,
+    /// The 3D view's rectangle in the window (x, y from the top left,
+    /// width, height, in pixels): beside the panel, or the whole window.
+    view: [i32; 4],
     title: TitleClock,
     last_swap: Instant,
     /// A screenshot asked for: Some(true) with the panel, Some(false) without.
@@ -178,7 +185,17 @@ impl Demo {
     }
 
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<Running> {
-        let (w, h) = self.options.size;
+        let screen = (event_loop.primary_monitor())
+            .or_else(|| event_loop.available_monitors().next())
+            .map(|m| (m.size().width, m.size().height));
+        let (w, h) = self.options.size.unwrap_or_else(|| {
+            let panel = if self.options.panel {
+                u32::from(panel::PANEL_WIDTH)
+            } else {
+                0
+            };
+            fit_window(self.scene.render.size, panel, screen)
+        });
         let attributes = Window::default_attributes()
             .with_title(format!("gloss — {}", self.scene.name))
             .with_inner_size(PhysicalSize::new(w, h));
@@ -198,6 +215,9 @@ impl Demo {
         )
         .with_context(|| format!("could not set up the renderer for {}", self.scene.name))?;
         let egui = egui_glow::EguiGlow::new(event_loop, ctx.gl.clone(), None, None, true);
+        // No animations: at a few frames a second (llvmpipe) they only
+        // leave the panel half open when a screenshot is taken.
+        egui.egui_ctx.all_styles_mut(|s| s.animation_time = 0.0);
         let mut panel = PanelState::new(&self.scene_path.display().to_string());
         panel.open = self.options.panel;
         panel.pass_times = self.options.pass_times;
@@ -225,6 +245,7 @@ impl Demo {
             fly: false,
             held: Default::default(),
             cursor: None,
+            view: [0, 0, to_i32(w), to_i32(h)],
             title: TitleClock::new(),
             last_swap: Instant::now(),
             screenshot: None,
@@ -232,83 +253,6 @@ impl Demo {
             shaders_seen: self.sources.modified(&shader_names()),
             checked: Instant::now(),
         })
-    }
-
-    fn handle(&mut self, event_loop: &ActiveEventLoop, event: WindowEvent) -> Result<()> {
-        if event == WindowEvent::RedrawRequested {
-            if self.frame()? {
-                event_loop.exit();
-            }
-            return Ok(());
-        }
-        let Some(run) = self.running.as_mut() else {
-            return Ok(());
-        };
-        let to_egui = run.egui.on_window_event(&run.ctx.window, &event);
-        // What egui sees, and any key (Tab, F1, a setting), shows in the panel.
-        if to_egui.repaint || matches!(event, WindowEvent::KeyboardInput { .. }) {
-            run.panel_layer.stale = true;
-        }
-        match event {
-            WindowEvent::CloseRequested | WindowEvent::Destroyed => event_loop.exit(),
-            // A zero size (minimised) keeps the old size until the window comes back.
-            WindowEvent::Resized(size) if size.width > 0 && size.height > 0 => {
-                run.ctx.resize(size.width, size.height);
-                run.renderer
-                    .resize(to_i32(size.width), to_i32(size.height))
-                    .context("could not resize the renderer")?;
-            }
-            WindowEvent::ModifiersChanged(m) => run.modifiers = m.state(),
-            _ if to_egui.consumed => {}
-            WindowEvent::KeyboardInput { event, .. }
-                if fly_key(&event.logical_key).is_some() && run.fly =>
-            {
-                let k = fly_key(&event.logical_key).expect("checked");
-                if event.state == ElementState::Pressed {
-                    run.held.insert(k);
-                } else {
-                    run.held.remove(&k);
-                }
-            }
-            WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
-                if let Some(a) = keys::action(&event.logical_key, run.modifiers.shift_key()) {
-                    if a == keys::KeyAction::Quit {
-                        event_loop.exit();
-                    } else {
-                        self.key(a);
-                    }
-                }
-            }
-            WindowEvent::MouseInput {
-                button: MouseButton::Left,
-                state,
-                ..
-            } => run.left_down = state == ElementState::Pressed,
-            WindowEvent::MouseInput {
-                button: MouseButton::Right | MouseButton::Middle,
-                state,
-                ..
-            } => run.pan_down = state == ElementState::Pressed,
-            WindowEvent::CursorMoved { position, .. } => {
-                if let Some(last) = run.cursor {
-                    let (dx, dy) = ((position.x - last.x) as f32, (position.y - last.y) as f32);
-                    match (run.left_down, run.pan_down, run.fly) {
-                        (true, _, false) => self.orbit.rotate(dx, dy),
-                        (true, _, true) => self.orbit.look(dx, dy),
-                        (false, true, _) => self.orbit.pan(dx, dy),
-                        _ => {}
-                    }
-                }
-                run.cursor = Some(position);
-            }
-            WindowEvent::CursorLeft { .. } => run.cursor = None,
-            WindowEvent::MouseWheel { delta, .. } => self.orbit.zoom(match delta {
-                MouseScrollDelta::LineDelta(_, y) => y,
-                MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
-            }),
-            _ => {}
-        }
-        Ok(())
     }
 }
 
@@ -353,15 +297,19 @@ impl ApplicationHandler for Demo {
     }
 }
 
-/// W A S D Q E, the fly-mode keys.
-fn fly_key(key: &winit::keyboard::Key) -> Option<char> {
-    match key {
-        winit::keyboard::Key::Character(c) => {
-            let c = c.to_lowercase().chars().next()?;
-            "wasdqe".contains(c).then_some(c)
-        }
-        _ => None,
-    }
+/// The window for a view of the scene's `size` with a panel `panel` pixels
+/// wide beside it, scaled down (keeping its shape) to fit a `screen` of
+/// that size when one is known.
+pub fn fit_window((w, h): (u32, u32), panel: u32, screen: Option<(u32, u32)>) -> (u32, u32) {
+    let (w, h) = (w.max(1) + panel, h.max(1));
+    let Some((sw, sh)) = screen.filter(|&(sw, sh)| sw > 0 && sh > 0) else {
+        return (w, h);
+    };
+    let s = (f64::from(sw) / f64::from(w))
+        .min(f64::from(sh) / f64::from(h))
+        .min(1.0);
+    let fit = |v: u32| ((f64::from(v) * s).floor() as u32).max(1);
+    (fit(w), fit(h))
 }
 
 fn to_i32(v: u32) -> i32 {

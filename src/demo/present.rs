@@ -5,37 +5,44 @@ use crate::gl::window::WindowContext;
 use anyhow::Result;
 use glow::HasContext;
 
-/// Copy the renderer's colour attachment 0 to the window's back buffer.
+/// Copy the renderer's colour attachment 0 into the 3D view's rectangle
+/// `[x, y, width, height]` (from the top left) of a window `window_height`
+/// pixels high: scaled up when the frame is rendered at a fraction of the
+/// view (each rendered pixel a block, NEAREST).
 ///
 /// The output already holds sRGB-encoded bytes, so GL_FRAMEBUFFER_SRGB stays
 /// off (no second encoding); the scissor test would clip the blit, so it is off too.
 pub(super) fn present(
     ctx: &WindowContext,
     output: &Framebuffer,
-    width: i32,
-    height: i32,
+    [x, y, width, height]: [i32; 4],
+    window_height: i32,
 ) -> Result<()> {
     let gl = &ctx.gl;
+    let bottom = window_height - y - height;
     unsafe {
         gl.disable(glow::FRAMEBUFFER_SRGB);
-        gl.disable(glow::SCISSOR_TEST);
         gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(output.id));
         gl.read_buffer(glow::COLOR_ATTACHMENT0);
         gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, None);
-        if (output.width, output.height) != (width, height) {
-            // A resize is on its way; avoid showing stale pixels at the edges.
+        if x > 0 {
+            // The strip under the panel: cleared, so no old frame shows
+            // through where the panel is narrower than it was.
+            gl.enable(glow::SCISSOR_TEST);
+            gl.scissor(0, 0, x, window_height);
             gl.clear_color(0.0, 0.0, 0.0, 1.0);
             gl.clear(glow::COLOR_BUFFER_BIT);
         }
+        gl.disable(glow::SCISSOR_TEST);
         gl.blit_framebuffer(
             0,
             0,
             output.width,
             output.height,
-            0,
-            0,
-            width,
-            height,
+            x,
+            bottom,
+            x + width,
+            bottom + height,
             glow::COLOR_BUFFER_BIT,
             glow::NEAREST,
         );

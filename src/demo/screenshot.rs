@@ -1,21 +1,24 @@
-//! F12 / P: the window's back buffer (the frame, before the panel is drawn
-//! over it) saved as gloss-screenshot-N.png in the current directory.
+//! F12 / P: the 3D view's rectangle of the window's back buffer (the frame,
+//! before the panel is drawn over it), Shift+F12 the whole window with the
+//! panel, saved as gloss-screenshot-N.png in the current directory.
 
 use anyhow::{Context as _, Result};
 use glow::HasContext;
 use std::path::PathBuf;
 
-/// Read the default framebuffer's back buffer and write it to the first
-/// free gloss-screenshot-N.png; returns the path.
-pub(super) fn save(gl: &glow::Context, width: u32, height: u32) -> Result<PathBuf> {
+/// Read the rectangle `[x, y, width, height]` (GL pixels, y up) of the
+/// default framebuffer's back buffer and write it to the first free
+/// gloss-screenshot-N.png; returns the path.
+pub(super) fn save(gl: &glow::Context, [x, y, width, height]: [i32; 4]) -> Result<PathBuf> {
+    let (width, height) = (width.max(1) as u32, height.max(1) as u32);
     let mut raw = vec![0u8; width as usize * height as usize * 4];
     unsafe {
         gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
         gl.read_buffer(glow::BACK);
         gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
         gl.read_pixels(
-            0,
-            0,
+            x,
+            y,
             width as i32,
             height as i32,
             glow::RGBA,

@@ -180,6 +180,25 @@ impl FramePlan {
         self.passes.iter().any(|p| p.name == name)
     }
 
+    /// Pass `i` named by what it draws, as the timings, the demo's
+    /// inspector and `gloss plan` show it: "shadow map (light 0)",
+    /// "forward (reflection in mirror 'glass')", "forward (view 'top' ...)".
+    pub fn title(&self, i: usize) -> String {
+        let Some(p) = self.passes.get(i) else {
+            return String::new();
+        };
+        if p.name == "shadow map" {
+            return format!("shadow map (light {})", p.item);
+        }
+        match self.views.get(p.view) {
+            Some(v) if p.view > 0 && v.name.starts_with("in ") => {
+                format!("{} (reflection {})", p.name, v.name)
+            }
+            Some(v) if p.view > 0 => format!("{} (view {})", p.name, v.name),
+            _ => p.name.to_string(),
+        }
+    }
+
     pub fn target(&self, name: &str) -> Option<&TargetDesc> {
         self.targets.iter().find(|t| t.name == name)
     }
@@ -277,7 +296,7 @@ impl std::fmt::Display for FramePlan {
                 f,
                 "  {}. {:<16} -> {:<20} {}{view}  [{}]",
                 i + 1,
-                p.name,
+                self.title(i),
                 p.target,
                 p.draws,
                 p.code

@@ -64,9 +64,18 @@ fn new_event_loop() -> Result<EventLoop<()>, String> {
 ///
 /// The event loop made to find out is kept for [`event_loop`] on this thread.
 pub fn display_available() -> bool {
+    display_problem().is_none()
+}
+
+/// Why no window can be opened, in the window backend's own words (None:
+/// one can). The CLI prints it before it falls back to headless.
+pub fn display_problem() -> Option<String> {
     EVENT_LOOP.with(|cell| {
         let mut cell = cell.borrow_mut();
-        cell.get_or_insert_with(new_event_loop).is_ok()
+        cell.get_or_insert_with(new_event_loop)
+            .as_ref()
+            .err()
+            .cloned()
     })
 }
 

@@ -123,5 +123,6 @@ pub fn input<'a>(scene: &'a Scene, r: &'a Renderer) -> PanelInput<'a> {
         gl_info: "headless test",
         size: (r.width, r.height),
         stretch: None,
+        volumes: 0,
     }
 }

@@ -50,6 +50,7 @@ fn the_panel_is_drawn_and_leaves_the_scene_and_the_gl_state_as_they_were() {
         thumbnails: &[],
         size: (w as i32, h as i32),
         stretch: None,
+        volumes: 0,
     };
     let raw = egui::RawInput {
         screen_rect: Some(egui::Rect::from_min_size(

@@ -16,6 +16,14 @@ pub fn advance(t: f32, dt: f32, (first, last): (f32, f32)) -> f32 {
     first + (t + dt - first).rem_euclid(length)
 }
 
+/// Did the user move the time slider? Drawing it rounds the time to its
+/// 2 decimals, which egui reports as a change: only a drag, or a new value
+/// further off than that rounding (a click, a key, a screen reader), is the
+/// user's, and only that pauses the playing.
+fn scrubbed(r: &egui::Response, before: f32, after: f32) -> bool {
+    r.dragged() || r.drag_stopped() || (r.changed() && (after - before).abs() > 0.006)
+}
+
 impl PanelState {
     pub(super) fn animation_section(
         &mut self,
@@ -31,11 +39,13 @@ impl PanelState {
             .default_open(true)
             .show(ui, |ui| {
                 ui.checkbox(&mut self.playing, "play");
-                let mut t = input.scene.animation.time;
+                let t0 = input.scene.animation.time;
+                let mut t = t0;
                 let slider = egui::Slider::new(&mut t, first..=last)
                     .text("time (s)")
                     .fixed_decimals(2);
-                if ui.add(slider).changed() {
+                let r = ui.add(slider);
+                if scrubbed(&r, t0, t) {
                     self.playing = false;
                     actions.push(Action::Time(t));
                 }

@@ -12,9 +12,11 @@ pub(super) fn keys_grid(ui: &mut egui::Ui) {
     });
 }
 
-pub(super) fn help_window(ui: &mut egui::Ui, open: &mut bool) {
+/// The keys' window; where it is drawn.
+pub(super) fn help_window(ui: &mut egui::Ui, open: &mut bool) -> Option<egui::Rect> {
     egui::Window::new("gloss — keys (F1)")
         .open(open)
         .collapsible(false)
-        .show(ui.ctx(), keys_grid);
+        .show(ui.ctx(), keys_grid)
+        .map(|r| r.response.rect)
 }

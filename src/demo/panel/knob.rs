@@ -1,5 +1,5 @@
 //! One control per knob (src/scene/knobs.rs): a checkbox, a slider, a row
-//! of choices or three numbers for a colour.
+//! of choices or three numbers and a colour picker for a colour.
 
 use crate::scene::RenderSettings;
 use crate::scene::knobs::{Kind, Knob, Value};
@@ -29,6 +29,14 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
             (Kind::Color, Value::Color(c)) => {
                 for v in [&mut c.x, &mut c.y, &mut c.z] {
                     ui.add(egui::DragValue::new(v).range(0.0..=10.0).speed(0.005));
+                }
+                // A colour picker for values within 0..1 (linear RGB, as
+                // the scene file holds them); brighter ones are typed.
+                if c.max_element() <= 1.0 {
+                    let mut rgb = c.to_array();
+                    if ui.color_edit_button_rgb(&mut rgb).changed() {
+                        *c = glam::Vec3::from_array(rgb);
+                    }
                 }
             }
             _ => {

@@ -10,8 +10,11 @@
 
 mod animation;
 mod geometry;
+mod head;
 mod help;
+mod inspector;
 mod knob;
+mod legend;
 mod post_chain;
 mod post_params;
 mod shadow_knobs;
@@ -20,6 +23,7 @@ mod timings;
 mod values;
 
 pub use animation::advance;
+pub use head::RenderScale;
 pub use shadow_knobs::too_many_casters;
 pub use timings::Timings;
 
@@ -30,6 +34,9 @@ use crate::scene::{Camera, Light, Material, RenderSettings, Scene, knobs};
 use crate::techniques;
 use help::{help_window, keys_grid};
 use std::path::PathBuf;
+
+/// The panel's width when it opens (egui points).
+pub const PANEL_WIDTH: u16 = 340;
 
 /// What the panel asks the demo to do.
 #[derive(Clone, Debug, PartialEq)]
@@ -98,6 +105,8 @@ pub struct PanelInput<'a> {
     /// The least and greatest value below 1.0 that the shadow-map view
     /// shown stretches to black and white.
     pub stretch: Option<(f32, f32)>,
+    /// How many lights have a volume (the overdraw view's hottest count).
+    pub volumes: usize,
 }
 
 /// What the panel remembers between frames.
@@ -118,6 +127,15 @@ pub struct PanelState {
     pub playing: bool,
     /// How fast it plays (1: real time).
     pub speed: f32,
+    /// The view is rendered at this fraction of its size.
+    pub scale: RenderScale,
+    /// The rectangle beside the panel (egui points) at its last drawing:
+    /// the 3D view's.
+    pub view: Option<egui::Rect>,
+    /// What the panel drew at its last drawing (points): the panel, the
+    /// overlay, the help window. egui's own used rectangle is the pass
+    /// before's.
+    pub drawn: egui::Rect,
     path_text: String,
     save_text: String,
 }
@@ -135,40 +153,50 @@ impl PanelState {
             thumbnails: true,
             playing: true,
             speed: 1.0,
+            scale: RenderScale::Full,
+            // Until the panel is first drawn: the panel at its first width.
+            drawn: egui::Rect::NOTHING,
+            view: Some(egui::Rect::from_min_max(
+                egui::pos2(f32::from(PANEL_WIDTH), 0.0),
+                egui::pos2(f32::INFINITY, f32::INFINITY),
+            )),
             path_text: scene_path.to_string(),
             save_text: "edited.toml".into(),
         }
     }
 
-    /// Draw the panel (and the help overlay) and collect what was asked.
+    /// Draw the panel (and the help overlay) and collect what was asked;
+    /// note the rectangle left beside it for the 3D view (`view`).
     pub fn show(&mut self, ui: &mut egui::Ui, input: &PanelInput) -> Vec<Action> {
         let mut actions = Vec::new();
-        if self.help {
-            help_window(ui, &mut self.help);
+        self.drawn = egui::Rect::NOTHING;
+        if self.help
+            && let Some(r) = help_window(ui, &mut self.help)
+        {
+            self.drawn = r;
         }
         if !self.open {
+            let r = self.overlay(ui, ui.available_rect_before_wrap(), input);
+            self.drawn = self.drawn.union(r);
             return actions;
         }
-        egui::Panel::left("gloss-panel")
-            .default_size(340.0)
+        let panel = egui::Panel::left("gloss-panel")
+            .default_size(f32::from(PANEL_WIDTH))
+            .size_range(220.0..=900.0)
             .resizable(true)
             .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    ui.heading("gloss");
-                    ui.small(input.gl_info);
-                    if let Some(e) = input.error {
-                        ui.colored_label(egui::Color32::from_rgb(255, 110, 90), e);
-                    }
-                    if let Some(s) = input.status {
-                        ui.label(s);
-                    }
+                self.top(ui, input);
+                // Wide content (the plan, long names) scrolls sideways
+                // rather than widening the panel.
+                egui::ScrollArea::both().show(ui, |ui| {
                     self.scene_section(ui, input, &mut actions);
                     self.animation_section(ui, input, &mut actions);
                     self.geometry_section(ui, input, &mut actions);
                     technique_section(ui, input, &mut actions);
                     post_chain::section(ui, input, &mut actions);
                     self.inspector_section(ui, input, &mut actions);
-                    self.timings.show(ui, input.times, &mut self.pass_times);
+                    self.timings
+                        .show(ui, input.plan, input.times, &mut self.pass_times);
                     egui::CollapsingHeader::new("Frame plan")
                         .default_open(false)
                         .show(ui, |ui| {
@@ -179,6 +207,9 @@ impl PanelState {
                         .show(ui, keys_grid);
                 });
             });
+        self.drawn = self.drawn.union(panel.response.rect);
+        // Kept while the panel is hidden: Tab brings it back at this width.
+        self.view = Some(ui.available_rect_before_wrap());
         actions
     }
 
@@ -251,96 +282,6 @@ impl PanelState {
                 }
                 if let Some(c) = values::camera(ui, &input.scene.camera) {
                     actions.push(Action::Camera(c));
-                }
-            });
-    }
-
-    fn inspector_section(
-        &mut self,
-        ui: &mut egui::Ui,
-        input: &PanelInput,
-        actions: &mut Vec<Action>,
-    ) {
-        egui::CollapsingHeader::new("Pass inspector")
-            .default_open(true)
-            .show(ui, |ui| {
-                let current = self.inspect;
-                let label = |i: Option<usize>| match i {
-                    None => "output: the final image".to_string(),
-                    Some(i) => input.views.get(i).map(View::label).unwrap_or_default(),
-                };
-                egui::ComboBox::from_id_salt("inspector")
-                    .width(300.0)
-                    .selected_text(label(current))
-                    .show_ui(ui, |ui| {
-                        for i in std::iter::once(None).chain((0..input.views.len()).map(Some)) {
-                            if ui.selectable_label(current == i, label(i)).clicked() {
-                                actions.push(Action::Inspect(i));
-                            }
-                        }
-                    });
-                ui.checkbox(&mut self.thumbnails, "thumbnails (click one to view it)");
-                if self.thumbnails {
-                    egui::ScrollArea::horizontal().show(ui, |ui| {
-                        ui.horizontal(|ui| {
-                            for (i, t) in input.thumbnails.iter().enumerate() {
-                                let Some(t) = t else { continue };
-                                let image = egui::Image::from_texture(t)
-                                    .fit_to_exact_size(egui::vec2(96.0, 54.0))
-                                    .sense(egui::Sense::click());
-                                let r = ui.add(image).on_hover_text(
-                                    input.views.get(i).map(View::label).unwrap_or_default(),
-                                );
-                                if r.clicked() {
-                                    actions.push(Action::Inspect(Some(i)));
-                                }
-                            }
-                        });
-                    });
-                }
-                ui.add(
-                    egui::Slider::new(&mut self.exposure, 0.01..=100.0)
-                        .logarithmic(true)
-                        .text("exposure (light views)"),
-                );
-                if current.and_then(|i| input.views.get(i)).is_some_and(|v| v.stencil) {
-                    // The stencil as any pass left it (the frame is drawn
-                    // again up to that pass).
-                    let passes = &input.plan.passes;
-                    self.stencil_after = self.stencil_after.min(passes.len());
-                    ui.add(
-                        egui::Slider::new(&mut self.stencil_after, 0..=passes.len())
-                            .text("stencil after pass (0: end of frame)"),
-                    );
-                    if let Some(p) = self.stencil_after.checked_sub(1).and_then(|i| passes.get(i)) {
-                        ui.small(format!("{}. {} (view {}): {}", self.stencil_after, p.name, p.view, p.draws));
-                    }
-                }
-                ui.horizontal(|ui| {
-                    if ui.button("compare with reference").on_hover_text(
-                        "render forward with the same camera and size; show RMSE, max and the difference (a view above)",
-                    ).clicked() {
-                        actions.push(Action::Compare);
-                    }
-                });
-                if let Some(c) = input.comparison {
-                    ui.label(c);
-                }
-                if let Some(s) = current.and_then(|i| input.views.get(i)?.shadow) {
-                    let n = s.resolution;
-                    let (lo, hi) = input.stretch.unwrap_or((0.0, 1.0));
-                    ui.small(format!(
-                        "light {}'s map, {n} x {n}{} DEPTH_COMPONENT32F: black {lo:.4}, white {hi:.4}",
-                        s.light,
-                        if s.cube() { " x 6" } else { "" }
-                    ));
-                } else if let Some(v) = current.and_then(|i| input.views.get(i)) {
-                    let fb = input
-                        .plan
-                        .target(v.target)
-                        .map(|t| t.attachments().join(", "));
-                    let (w, h) = input.size;
-                    ui.small(format!("{} ({w}x{h}): {}", v.target, fb.unwrap_or_default()));
                 }
             });
     }

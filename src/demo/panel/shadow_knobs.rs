@@ -91,9 +91,9 @@ pub fn show(ui: &mut egui::Ui, i: usize, l: &mut Light, before: &[Light]) -> boo
                 }
             });
     });
-    changed |= drag(ui, "bias (world units)", &mut s.bias, 0.001);
-    changed |= drag(ui, "slope bias", &mut s.slope_bias, 0.05);
-    changed |= drag(ui, "normal offset (texels)", &mut s.normal_offset, 0.05);
+    changed |= drag(ui, "bias (world units)", &mut s.bias, 1.0);
+    changed |= drag(ui, "slope bias", &mut s.slope_bias, 20.0);
+    changed |= drag(ui, "normal offset (texels)", &mut s.normal_offset, 20.0);
     changed |= ui
         .checkbox(&mut s.cull_front, "cull front faces (store back faces)")
         .changed();
@@ -116,12 +116,16 @@ pub fn show(ui: &mut egui::Ui, i: usize, l: &mut Light, before: &[Light]) -> boo
     changed
 }
 
-/// A value that must stay >= 0 (the loader refuses a negative bias).
-fn drag(ui: &mut egui::Ui, label: &str, v: &mut f32, speed: f64) -> bool {
+/// A value that must stay >= 0 (the loader refuses a negative bias), on
+/// a logarithmic slider from 0 to `max` (a bias is tuned by its order of
+/// magnitude); a larger value from the file stays as it is until moved.
+fn drag(ui: &mut egui::Ui, label: &str, v: &mut f32, max: f32) -> bool {
     ui.horizontal(|ui| {
         ui.label(label);
-        ui.add(egui::DragValue::new(v).range(0.0..=1000.0).speed(speed))
-            .changed()
+        let slider = egui::Slider::new(v, 0.0..=max.max(*v))
+            .logarithmic(true)
+            .smallest_positive(1e-5);
+        ui.add(slider).changed()
     })
     .inner
 }

@@ -31,7 +31,15 @@ impl Timings {
         v.get(v.len() / 2).copied()
     }
 
-    pub fn show(&self, ui: &mut egui::Ui, times: &PassTimes, pass_times: &mut bool) {
+    /// The timings of `plan`'s passes (one each, in its order), each named
+    /// by what it draws (`FramePlan::title`).
+    pub fn show(
+        &self,
+        ui: &mut egui::Ui,
+        plan: &crate::frame::plan::FramePlan,
+        times: &PassTimes,
+        pass_times: &mut bool,
+    ) {
         egui::CollapsingHeader::new("Timings")
             .default_open(true)
             .show(ui, |ui| {
@@ -46,7 +54,11 @@ impl Timings {
                 });
                 egui::Grid::new("pass-times").striped(true).show(ui, |ui| {
                     for (i, (name, ms)) in times.passes.iter().enumerate() {
-                        ui.label(*name);
+                        if times.passes.len() == plan.passes.len() {
+                            ui.label(plan.title(i));
+                        } else {
+                            ui.label(*name);
+                        }
                         ui.monospace(format!("{ms:8.2} ms"));
                         if gpu {
                             ui.monospace(format!("GPU {:8.2} ms", times.gpu[i]));

@@ -1,0 +1,109 @@
+//! The demo's window driven as a student drives it (src/demo/): Xvfb, keys
+//! and the mouse from xdotool, the window's own screenshots (F12: the 3D
+//! view; Shift+F12: the whole window with the panel) read back as pixels.
+//!
+//! Every wait polls for the file or the log line it needs, with a deadline,
+//! so that a loaded machine is slow but not wrong; the whole script runs
+//! under `timeout`. Needs `xvfb-run` and `xdotool` (.ci/run installs them);
+//! GLOSS_SKIP_WINDOW_TEST=1 skips these tests where a machine cannot have them.
+
+mod input;
+mod layout;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+pub const GLOSS: &str = env!("CARGO_BIN_EXE_gloss");
+
+pub fn crate_dir() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Shell functions the scripts use: `start ARGS` starts gloss (its output
+/// in gloss.log) and focuses its window; `shot N` waits until the demo says
+/// it wrote gloss-screenshot-N.png; `key K` presses a key; `quit` ends it.
+const PRELUDE: &str = r#"
+set -e
+wait_log() {
+    for _ in $(seq 1200); do grep -q "$1" gloss.log 2>/dev/null && return 0; sleep 0.1; done
+    echo "timed out waiting for '$1' in gloss.log" >&2; cat gloss.log >&2; return 1
+}
+start() {
+    "$GLOSS" --backend window --debug --frames 2000000 "$@" > gloss.log 2>&1 &
+    pid=$!
+    wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
+    xdotool windowfocus --sync "$wid"
+    wait_log "OpenGL"
+}
+key() { xdotool key --clearmodifiers "$@"; }
+shot() { wait_log "gloss-screenshot-$1.png"; }
+quit() { key Escape; wait $pid; }
+"#;
+
+/// Run `body` (after `PRELUDE`) under Xvfb with a `screen` such as
+/// "1280x720x24", in a fresh directory `name` under the temp dir. Asserts
+/// that it exits 0 and that gloss reported no error; returns the directory
+/// and gloss's log. None when GLOSS_SKIP_WINDOW_TEST=1.
+pub fn drive(name: &str, screen: &str, body: &str) -> Option<(PathBuf, String)> {
+    if std::env::var("GLOSS_SKIP_WINDOW_TEST").as_deref() == Ok("1") {
+        eprintln!("skipped: GLOSS_SKIP_WINDOW_TEST=1");
+        return None;
+    }
+    assert!(
+        Command::new("xvfb-run").arg("--help").output().is_ok()
+            && Command::new("xdotool").arg("version").output().is_ok(),
+        "xvfb-run and xdotool are needed (.ci/run installs them), \
+         or set GLOSS_SKIP_WINDOW_TEST=1 to skip this test"
+    );
+    let dir = std::env::temp_dir().join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = Command::new("xvfb-run")
+        .args(["-a", "-s", &format!("-screen 0 {screen}")])
+        .args(["timeout", "240", "bash", "-c"])
+        .arg(format!("{PRELUDE}\n{body}"))
+        .env("GLOSS", GLOSS)
+        .current_dir(&dir)
+        .output()
+        .expect("could not start xvfb-run");
+    let log = std::fs::read_to_string(dir.join("gloss.log")).unwrap_or_default();
+    assert!(
+        out.status.success(),
+        "the driven demo failed ({})\n--- stdout ---\n{}\n--- stderr ---\n{}\n--- gloss.log ---\n{log}",
+        out.status,
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        !log.to_lowercase().contains("error") && !log.contains("panicked"),
+        "the demo reported an error:\n{log}"
+    );
+    Some((dir, log))
+}
+
+/// Screenshot `n` of a driven demo.
+pub fn shot(dir: &Path, log: &str, n: u32) -> image::RgbaImage {
+    let p = dir.join(format!("gloss-screenshot-{n}.png"));
+    image::open(&p)
+        .unwrap_or_else(|e| panic!("{}: {e}\n--- gloss.log ---\n{log}", p.display()))
+        .to_rgba8()
+}
+
+/// The share of pixels of `a` and `b` (of one size) that differ by more
+/// than `tolerance` in some channel.
+pub fn differing(a: &image::RgbaImage, b: &image::RgbaImage, tolerance: u8) -> f64 {
+    assert_eq!(a.dimensions(), b.dimensions());
+    let n = (a.pixels().zip(b.pixels()))
+        .filter(|(p, q)| (0..3).any(|c| p.0[c].abs_diff(q.0[c]) > tolerance))
+        .count();
+    n as f64 / a.pixels().len() as f64
+}
+
+/// Pixels of egui's panel background (dark theme) in columns `x0..x1`.
+pub fn panel_pixels(img: &image::RgbaImage, x0: u32, x1: u32) -> usize {
+    let fill = egui::Visuals::dark().panel_fill;
+    (0..img.height())
+        .flat_map(|y| (x0..x1).map(move |x| (x, y)))
+        .filter(|&(x, y)| img.get_pixel(x, y).0[..3] == [fill.r(), fill.g(), fill.b()])
+        .count()
+}

@@ -49,8 +49,9 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     let render = super::render_settings::render_settings(&f)?;
     let lights = super::lights::lights(&f)?;
     let (mut materials, material_index) = materials(&f, base)?;
-    let (mut objects, file_warnings, loaded) = objects(&f, &material_index, &mut materials, base)
-        .map_err(|e| super::object_fields::name_field(e, file_objects, &f))?;
+    let (mut objects, file_warnings, loaded) =
+        objects(&f, &material_index, &mut materials, base)
+            .map_err(|e| super::object_fields::name_field(e, file_objects, &f))?;
     // Each glTF file's nodes, as children of its entry.
     let gltf = super::gltf_objects::expand(&f.objects, &mut objects, &mut materials, &loaded)?;
     if !gltf.tracks.is_empty() || objects.len() > f.objects.len() {

@@ -31,8 +31,7 @@ pub const MAX_TEXTURE_BYTES: u64 = 1 << 30;
 /// core of a laptop (0.5 us an evaluation, 1.5 us a shadow ray).
 pub const MAX_BAKE_WORK: u64 = 1 << 26;
 
-/// What a shadow ray adds to a texel-light evaluation.
-pub const SHADOW_RAY_WORK: u64 = 3;
+pub use crate::frame::light_maps::SHADOW_RAY_WORK;
 
 /// GL's limits on a texture's side, as this GL gives them.
 #[derive(Clone, Copy, Debug)]
@@ -265,23 +264,8 @@ pub fn check(
     Ok(unchecked)
 }
 
-/// The light maps' bake: texels x lights, and x shadow rays where on.
-pub fn bake_work(scene: &Scene) -> Vec<(usize, u64)> {
-    if !scene.render.light_maps {
-        return Vec::new();
-    }
-    let lights = scene.lights.len() as u64;
-    (scene.objects.iter().enumerate())
-        .filter_map(|(i, o)| {
-            let l = o.light_map?;
-            let per = 1 + if l.shadows { SHADOW_RAY_WORK } else { 0 };
-            Some((i, u64::from(l.size) * u64::from(l.size) * lights * per))
-        })
-        .collect()
-}
-
 fn check_bake(scene: &Scene) -> Result<()> {
-    let work = bake_work(scene);
+    let work = crate::frame::light_maps::bake_work(scene);
     let total: u64 = work.iter().map(|w| w.1).sum();
     if total <= MAX_BAKE_WORK {
         return Ok(());

@@ -5,9 +5,9 @@
 //! texture) in its own file; this module only sets uniforms. The opaque
 //! passes skip the `transparent` items; the transparency pass draws them.
 
+use crate::frame::alpha_maps::with_alpha_map;
 use crate::frame::billboards::BillboardDraws;
 use crate::frame::culling::{CullStats, CullTree, mesh_bounds};
-use crate::frame::draw_textures::with_alpha_map;
 use crate::frame::skins::SkinDraw;
 use crate::frame::texturing::TextureSamplers;
 use crate::gl::Gl;

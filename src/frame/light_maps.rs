@@ -10,6 +10,10 @@ use crate::scene::Scene;
 use crate::scene::meshes::mesh_data;
 use anyhow::{Context as _, Result};
 
+/// What one shadow ray costs in bake work, against one texel-light
+/// evaluation (src/frame/budget.rs bounds the total).
+pub const SHADOW_RAY_WORK: u64 = 3;
+
 /// A bake of this much work (src/frame/budget.rs) or more prints its
 /// progress: about a second.
 pub const LONG_BAKE: u64 = 1 << 21;
@@ -30,7 +34,7 @@ pub fn bake_light_maps(gl: &Gl, scene: &Scene) -> Result<Vec<Option<Texture>>> {
     let mut maps = Vec::new();
     // The budget (src/frame/budget.rs) bounded the work; a long bake says
     // what it is doing, object by object.
-    let work = crate::frame::budget::bake_work(scene);
+    let work = bake_work(scene);
     let total: u64 = work.iter().map(|w| w.1).sum();
     let mut done = 0;
     for (i, o) in scene.objects.iter().enumerate() {
@@ -66,4 +70,19 @@ pub fn bake_light_maps(gl: &Gl, scene: &Scene) -> Result<Vec<Option<Texture>>> {
         maps.push(Some(t));
     }
     Ok(maps)
+}
+
+/// The light maps' bake: texels x lights, and x shadow rays where on.
+pub fn bake_work(scene: &Scene) -> Vec<(usize, u64)> {
+    if !scene.render.light_maps {
+        return Vec::new();
+    }
+    let lights = scene.lights.len() as u64;
+    (scene.objects.iter().enumerate())
+        .filter_map(|(i, o)| {
+            let l = o.light_map?;
+            let per = 1 + if l.shadows { SHADOW_RAY_WORK } else { 0 };
+            Some((i, u64::from(l.size) * u64::from(l.size) * lights * per))
+        })
+        .collect()
 }

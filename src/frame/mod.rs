@@ -19,6 +19,7 @@
 //! - `check`: what `gloss plan` checks without a GL context (the files the
 //!   renderer loads, the light count), with the renderer's own functions.
 
+pub mod alpha_maps;
 pub mod billboards;
 pub mod budget;
 pub mod check;

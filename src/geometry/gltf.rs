@@ -29,6 +29,12 @@ use gltf::animation::util::ReadOutputs;
 use std::path::Path;
 
 pub use super::gltf_buffers::MAX_GLTF_BYTES;
+/// The most nodes one glTF file may have.
+pub const MAX_GLTF_NODES: usize = 262_144;
+/// The largest |value| of a node's translation and scale, and of a matrix
+/// entry (an inverse bind matrix): gloss's world extent (1e9).
+pub const MAX_GLTF_VALUE: f32 = 1e9;
+
 /// Most vertices `load_gltf` accepts in the skinned mesh.
 pub const MAX_GLTF_VERTICES: usize = 16_000_000;
 
@@ -235,7 +241,7 @@ pub fn skin_of(
             "glTF file {name}: the skin's inverse bind matrices are not {joint_count} finite matrices"
         );
     }
-    let limit = super::gltf_scene::MAX_GLTF_VALUE;
+    let limit = MAX_GLTF_VALUE;
     if let Some(j) =
         (inverse_bind.iter()).position(|m| m.abs().to_cols_array().iter().any(|x| *x > limit))
     {
@@ -380,7 +386,7 @@ fn rotations(what: &str, keys: impl Iterator<Item = [f32; 4]>) -> Result<Vec<Qua
 
 /// Translation or scale keys, each within the world limit (1e9).
 fn within_world(what: &str, kind: &str, keys: impl Iterator<Item = [f32; 3]>) -> Result<Vec<Vec3>> {
-    let limit = super::gltf_scene::MAX_GLTF_VALUE;
+    let limit = MAX_GLTF_VALUE;
     keys.enumerate()
         .map(|(k, v)| {
             let v = Vec3::from(v);

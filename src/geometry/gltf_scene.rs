@@ -23,11 +23,7 @@ use std::collections::BTreeSet;
 use std::path::Path;
 use std::sync::Arc;
 
-/// The most nodes one glTF file may have.
-pub const MAX_GLTF_NODES: usize = 262_144;
-/// The largest |value| of a node's translation and scale, and of a matrix
-/// entry (an inverse bind matrix): gloss's world extent (1e9).
-pub const MAX_GLTF_VALUE: f32 = 1e9;
+pub use super::gltf::{MAX_GLTF_NODES, MAX_GLTF_VALUE};
 
 /// A node: its rest transform, parent, and what it holds.
 #[derive(Clone, Debug, PartialEq)]

@@ -29,6 +29,7 @@
 //! blend state it needs, and restores the defaults (all off, GL_LESS, masks
 //! on, GL_CCW) before returning.
 
+use super::mirror_order::{CLEAR_DEPTH, MARK, STENCIL_AND_CLEAR, SURFACE, SURFACE_TESTED, UNMARK};
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -66,22 +67,6 @@ pub const MIRROR: Technique = Technique {
     order: Some(super::mirror_order::order),
     runs: Runs::PerView,
 };
-
-/// Normal first, pass 2: stencil where the mirror passes the depth test.
-/// Where the mirror's passes are run (`gloss plan` names the file).
-pub(super) const FILE: &str = file!();
-
-pub(super) const MARK: u32 = 0;
-/// Normal first, pass 3 (first half): depth = far inside the stencil only.
-pub(super) const CLEAR_DEPTH: u32 = 1;
-/// Reflected first, pass 2: mark the mirror, clear the colour outside it.
-pub(super) const STENCIL_AND_CLEAR: u32 = 2;
-/// Multiply the reflection by the mirror's tint (stencil region: normal first).
-pub(super) const SURFACE: u32 = 3;
-/// The same, depth-tested against what is in front (reflected first).
-pub(super) const SURFACE_TESTED: u32 = 4;
-/// Give a nested region back to its parent's stencil value.
-pub(super) const UNMARK: u32 = 5;
 
 fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
     vec![]

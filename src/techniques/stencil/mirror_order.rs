@@ -6,7 +6,6 @@
 //! `render.mirror_depth` levels deep, followed only where they can show
 //! (src/scene/mirror_views.rs).
 
-use super::mirror::{CLEAR_DEPTH, MARK, STENCIL_AND_CLEAR, SURFACE, SURFACE_TESTED, UNMARK};
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -14,6 +13,22 @@ use crate::frame::views::View;
 use crate::frame::{FrameOrder, Stage};
 use crate::scene::mirror_views::{self, Seen};
 use crate::scene::{MirrorOrder, Scene};
+
+/// Where the mirror's passes are run (`gloss plan` names the file).
+pub(super) const FILE: &str = "src/techniques/stencil/mirror.rs";
+
+/// Normal first, pass 2: stencil where the mirror passes the depth test.
+pub(super) const MARK: u32 = 0;
+/// Normal first, pass 3 (first half): depth = far inside the stencil only.
+pub(super) const CLEAR_DEPTH: u32 = 1;
+/// Reflected first, pass 2: mark the mirror, clear the colour outside it.
+pub(super) const STENCIL_AND_CLEAR: u32 = 2;
+/// Multiply the reflection by the mirror's tint (stencil region: normal first).
+pub(super) const SURFACE: u32 = 3;
+/// The same, depth-tested against what is in front (reflected first).
+pub(super) const SURFACE_TESTED: u32 = 4;
+/// Give a nested region back to its parent's stencil value.
+pub(super) const UNMARK: u32 = 5;
 
 /// The frame's views and stages; None without a mirror (no stencil work).
 pub(super) fn order(scene: &Scene, _: &FrameLights) -> Option<FrameOrder> {
@@ -70,27 +85,17 @@ fn reflected_first(scene: &Scene, m: usize) -> Option<FrameOrder> {
     if stencil {
         let draws = format!("mirror '{}': stencil 1, colour cleared outside it", o.name);
         stages.push(Stage::Own(
-            Pass::new(
-                "mirror stencil",
-                world_target(scene),
-                draws,
-                super::mirror::FILE,
-            )
-            .step(STENCIL_AND_CLEAR)
-            .about(m, 1),
+            Pass::new("mirror stencil", world_target(scene), draws, FILE)
+                .step(STENCIL_AND_CLEAR)
+                .about(m, 1),
         ));
     }
     stages.push(Stage::World(0));
     let draws = format!("mirror '{}': tint x reflectance, depth-tested", o.name);
     stages.push(Stage::Own(
-        Pass::new(
-            "mirror surface",
-            world_target(scene),
-            draws,
-            super::mirror::FILE,
-        )
-        .step(SURFACE_TESTED)
-        .about(m, u32::from(stencil)),
+        Pass::new("mirror surface", world_target(scene), draws, FILE)
+            .step(SURFACE_TESTED)
+            .about(m, u32::from(stencil)),
     ));
     Some(FrameOrder {
         views: vec![camera, reflected],
@@ -142,7 +147,7 @@ fn visit(scene: &Scene, mirrors: &[usize], order: &mut FrameOrder, m: usize, at:
     let name = &scene.objects[m].name;
     let own = |pass: &'static str, step: u32, draws: String| {
         Stage::Own(
-            Pass::new(pass, world_target(scene), draws, super::mirror::FILE)
+            Pass::new(pass, world_target(scene), draws, FILE)
                 .step(step)
                 .about(m, value)
                 .for_view(parent),

@@ -110,7 +110,11 @@ impl LightingVariant {
             (false, true) => "linear falloff",
             (false, false) => "notes falloff",
         };
-        let shadows = if self.shadows { "shadows" } else { "no shadows" };
+        let shadows = if self.shadows {
+            "shadows"
+        } else {
+            "no shadows"
+        };
         let model = if self.microfacet {
             "Phong + microfacet"
         } else {

@@ -31,8 +31,8 @@ use crate::lighting;
 use crate::scene::{Camera, RenderSettings, Scene};
 use crate::techniques;
 use anyhow::Result;
-use std::collections::HashMap;
 use glow::HasContext;
+use std::collections::HashMap;
 
 pub struct Renderer {
     gl: Gl,

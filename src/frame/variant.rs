@@ -12,7 +12,6 @@
 //! `render.specialize = false` gives the general shader, which is also what
 //! a program built without these defines compiles.
 
-use crate::frame::gbuffer::material_attachments;
 use crate::frame::lights::FrameLights;
 use crate::scene::{Falloff, LightKind, Scene};
 
@@ -28,8 +27,9 @@ pub struct LightingVariant {
     pub linear: bool,
     /// Some light casts a shadow (the caster loop and its lookups).
     pub shadows: bool,
-    /// Some opaque material is microfacet (the G-buffer has gAlpha), so a
-    /// pixel may need notes 03's BRDF rather than Phong's lobe.
+    /// Some object's material is microfacet (opaque: the G-buffer has
+    /// gAlpha; any: the forward pass shades it), so a pixel may need notes
+    /// 03's BRDF rather than Phong's lobe.
     pub microfacet: bool,
 }
 
@@ -61,7 +61,8 @@ impl LightingVariant {
             windowed: with_radius && scene.render.falloff == Falloff::Windowed,
             linear: with_radius && scene.render.falloff == Falloff::Linear,
             shadows: scene.lights.iter().any(|l| l.shadow.is_some()),
-            microfacet: !material_attachments(scene).is_empty(),
+            microfacet: (scene.objects.iter())
+                .any(|o| scene.materials[o.material].microfacet.is_some()),
         }
     }
 

@@ -2,7 +2,7 @@
 //! the lighting shaders specialised to the frame.
 //!
 //! * each variant gives the general shader's image within 1/255, for both
-//!   forms of the deferred pass, on scenes that hold every light type,
+//!   forms of the deferred pass and the forward pass, on scenes that hold every light type,
 //!   shadows of each kind, the windowed and linear falloffs and microfacet
 //!   materials; and the plan names the variant;
 //! * a variant keeps every light type its scene holds: each of
@@ -50,8 +50,17 @@ fn each_variant_gives_the_general_image_and_the_plan_names_it() {
         "windowed-falloff.toml",
         "linear-falloff.toml",
     ] {
-        for form in [DeferredLights::SinglePass, DeferredLights::PerLight] {
-            let special = small_deferred(name, form);
+        for (path, form) in [
+            (RenderPath::Deferred, DeferredLights::SinglePass),
+            (RenderPath::Deferred, DeferredLights::PerLight),
+            (RenderPath::Forward, DeferredLights::PerLight),
+        ] {
+            let special = with_path(&small_deferred(name, form), path);
+            let pass_name = if path == RenderPath::Forward {
+                "forward"
+            } else {
+                "lighting"
+            };
             let mut general = special.clone();
             general.render.specialize = false;
             let v = variant(&special);
@@ -63,7 +72,7 @@ fn each_variant_gives_the_general_image_and_the_plan_names_it() {
             ] {
                 let plan = gloss::techniques::plan(s);
                 let pass = (plan.passes.iter())
-                    .find(|p| p.name == "lighting")
+                    .find(|p| p.name == pass_name)
                     .unwrap_or_else(|| panic!("{name}: no lighting pass\n{plan}"));
                 assert_eq!(pass.variant.as_deref(), Some(words.as_str()), "{plan}");
                 assert!(plan.to_string().contains(&words), "{plan}");
@@ -72,12 +81,12 @@ fn each_variant_gives_the_general_image_and_the_plan_names_it() {
             let b = render_scene(&ctx, &general, Output::Srgb8).expect("general");
             assert_eq!(a.variant(), v);
             let m = common::assert_close(
-                &format!("variant-vs-general-{}-{form:?}", special.name),
+                &format!("variant-vs-general-{}-{path:?}-{form:?}", special.name),
                 &a.read_image(),
                 &b.read_image(),
                 &WITHIN_1,
             );
-            eprintln!("{name} {form:?} [{}]: {m}", v.describe());
+            eprintln!("{name} {path:?} {form:?} [{}]: {m}", v.describe());
         }
     }
 }

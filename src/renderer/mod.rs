@@ -5,6 +5,7 @@
 
 mod output;
 mod passes;
+mod programs;
 
 use output::target_descs;
 pub use output::{Output, stencil_color, stencil_image};
@@ -20,7 +21,7 @@ use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
 use crate::frame::uniforms::FrameUniforms;
 use crate::frame::variant::LightingVariant;
 use crate::frame::views::View;
-use crate::frame::{Frame, Programs, RunPasses};
+use crate::frame::{Frame, RunPasses};
 use crate::gl::buffer::Buffer;
 use crate::gl::debug::DebugLog;
 use crate::gl::framebuffer::Framebuffer;
@@ -158,52 +159,6 @@ impl Renderer {
         r.upload_lights();
         debug.check(gl, "renderer set-up")?;
         Ok(r)
-    }
-
-    /// Build the programs of every technique the plan uses that has none
-    /// yet, the specialised ones for lighting `variant` (src/frame/variant.rs):
-    /// when it changes, their instances for the old one go to the cache and
-    /// those for the new one come from it, or are built.
-    fn build_planned_techniques(&mut self, variant: LightingVariant) -> Result<()> {
-        if variant != self.variant {
-            for (i, t) in self.techniques.iter_mut().enumerate() {
-                if self.specialised[i]
-                    && let Some(t) = t.take()
-                {
-                    self.variant_cache.insert((i, self.variant), t);
-                }
-            }
-            self.variant = variant;
-        }
-        let defines = [("MAX_LIGHTS", self.max_lights.to_string())];
-        let variant_defines = variant.defines();
-        let used = std::cell::Cell::new(false);
-        let programs = Programs {
-            gl: &self.gl,
-            sources: &self.sources,
-            defines: &defines,
-            variant: &variant_defines,
-            variant_used: &used,
-        };
-        self.draws.shadow_cull.set(Default::default());
-        for pass in &self.plan.passes {
-            let i = pass.technique;
-            if self.techniques[i].is_none() {
-                if let Some(t) = self.variant_cache.remove(&(i, variant)) {
-                    self.techniques[i] = Some(t);
-                    continue;
-                }
-                used.set(false);
-                self.techniques[i] = Some((techniques::ALL[i].create)(&programs)?);
-                self.specialised[i] = used.get();
-            }
-        }
-        Ok(())
-    }
-
-    /// The lighting variant the specialised passes run (src/frame/variant.rs).
-    pub fn variant(&self) -> LightingVariant {
-        self.variant
     }
 
     /// Take new render settings (the demo's panel); see `set_scene_values`.

@@ -128,8 +128,20 @@ impl Programs<'_> {
     /// `build`, specialised to the frame's lighting variant: the parts of
     /// glsl/common/lighting.glsl the scene does not need left out.
     pub fn build_variant(&self, stages: &[(u32, &str)]) -> Result<Program> {
+        self.build_variant_with(stages, &[])
+    }
+
+    /// `build_variant`, with `#define`s of its own besides.
+    pub fn build_variant_with(
+        &self,
+        stages: &[(u32, &str)],
+        defines: &[(&str, String)],
+    ) -> Result<Program> {
         self.variant_used.set(true);
-        self.build_with(stages, self.variant)
+        let all: Vec<(&str, String)> = (self.variant.iter().cloned())
+            .chain(defines.iter().cloned())
+            .collect();
+        self.build_with(stages, &all)
     }
 
     /// `build_with`, for a program whose vertex outputs `varyings` are

@@ -2,7 +2,7 @@
 //! the lighting shaders specialised to the frame.
 //!
 //! * each variant gives the general shader's image within 1/255, for both
-//!   forms of the deferred pass and the forward pass, on scenes that hold every light type,
+//!   forms of the deferred pass, the forward pass and tiled shading, on scenes that hold every light type,
 //!   shadows of each kind, the windowed and linear falloffs and microfacet
 //!   materials; and the plan names the variant;
 //! * a variant keeps every light type its scene holds: each of
@@ -54,6 +54,7 @@ fn each_variant_gives_the_general_image_and_the_plan_names_it() {
             (RenderPath::Deferred, DeferredLights::SinglePass),
             (RenderPath::Deferred, DeferredLights::PerLight),
             (RenderPath::Forward, DeferredLights::PerLight),
+            (RenderPath::Tiled, DeferredLights::PerLight),
         ] {
             let special = with_path(&small_deferred(name, form), path);
             let pass_name = if path == RenderPath::Forward {

@@ -32,6 +32,20 @@
 // on, with Lmax the volume radius; Kc, Kl, Kq unused.
 #define LIGHT_LINEAR 8
 
+// Shaders specialised to the frame (src/frame/variant.rs): a program built
+// for a lighting variant defines LIGHTING_VARIANT and which parts the scene
+// needs; the #if blocks below leave the others out. Without the defines
+// (every program not built as a variant) every part is in: the general model.
+#ifndef LIGHTING_VARIANT
+#define VARIANT_DIRECTIONAL 1
+#define VARIANT_POINT 1
+#define VARIANT_SPOT 1
+#define VARIANT_WINDOWED 1
+#define VARIANT_LINEAR 1
+#define VARIANT_SHADOWS 1
+#define VARIANT_MICROFACET 1
+#endif
+
 // std140, 64 bytes a light (src/lighting.rs writes this layout).
 struct Light {
     vec4 position_type;    // xyz position, w type
@@ -71,10 +85,13 @@ float light_factor(Light light, vec3 P, out vec3 L, out float sin_sigma) {
     int code = int(light.position_type.w);
     int type = code & 3;
     sin_sigma = 0.0;
+#if VARIANT_DIRECTIONAL
     if (type == LIGHT_DIRECTIONAL) {
         L = -light.direction_radius.xyz;
         return 1.0;
     }
+#endif
+#if VARIANT_POINT || VARIANT_SPOT
     vec3 to_light = light.position_type.xyz - P;
     float d = length(to_light);
     L = to_light / max(d, 1e-20);
@@ -82,22 +99,33 @@ float light_factor(Light light, vec3 P, out vec3 L, out float sin_sigma) {
     sin_sigma = LIGHT_RADIUS / r;
     vec3 k = light.atten_cos_inner.xyz;
     float att = 1.0 / (k.x + k.y * r + k.z * r * r);
+#if VARIANT_LINEAR
     if ((code & LIGHT_LINEAR) != 0) {
         att = clamp(1.0 - d / light.direction_radius.w, 0.0, 1.0);
     }
+#endif
+#if VARIANT_WINDOWED
     if ((code & LIGHT_WINDOWED) != 0) {
         float radius = light.direction_radius.w;
         float x = radius > 0.0 ? d / radius : 1.0;
         float w = clamp(1.0 - x * x * x * x, 0.0, 1.0);
         att *= w * w;
     }
+#endif
+#if VARIANT_SPOT
     if (type == LIGHT_SPOT) {
         float c = dot(-L, light.direction_radius.xyz);
         float cos_outer = light.color_cos_outer.w;
         float cos_inner = light.atten_cos_inner.w;
         att *= smoothstep(cos_outer, cos_inner, c);
     }
+#endif
     return att;
+#else
+    // Directional lights only (a variant with neither point nor spot).
+    L = -light.direction_radius.xyz;
+    return 1.0;
+#endif
 }
 
 // Diffuse and specular light (not yet multiplied by the material) from one light.
@@ -129,6 +157,10 @@ vec3 phong(Light light, vec3 P, vec3 N, vec3 V, vec3 kd, vec3 ks, float shinines
 // light's horizon both use its N . L.
 void surface_light(Light light, vec3 P, vec3 N, vec3 V, Reflectance r,
                    out vec3 diffuse, out vec3 specular) {
+#if !VARIANT_MICROFACET
+    // No microfacet material in the frame: Phong's lobe alone.
+    phong_light(light, P, N, V, r.shininess, diffuse, specular);
+#else
     if (!r.microfacet) {
         phong_light(light, P, N, V, r.shininess, diffuse, specular);
         return;
@@ -141,6 +173,7 @@ void surface_light(Light light, vec3 P, vec3 N, vec3 V, Reflectance r,
     float n_dot_l = sphere_cosine(dot(N, L), sin_sigma, visible);
     diffuse = I * n_dot_l;
     specular = I * (PI * microfacet_brdf(L, V, N, r.alpha, r.eta, 1.0) * n_dot_l);
+#endif
 }
 
 // The colour one light gives a surface: k_d times its diffuse light plus ks

@@ -17,9 +17,12 @@ void main() {
     vec3 V = normalize(u_eye - s.P);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < u_light_count; ++i) {
+#if VARIANT_SHADOWS
         if (casts_shadow(i)) continue;   // in the loop below
+#endif
         sum += surface_shade(u_lights[i], s.P, s.N, V, s.kd, s.ks, s.r);
     }
+#if VARIANT_SHADOWS
     // The lights that cast, with shadow mapping's second pass (notes 01 §8.5).
     for (int k = 0; k < MAX_CASTERS; ++k) {
         int i = caster(k);
@@ -27,5 +30,6 @@ void main() {
         float lit = shadow_visibility(i, s.P, s.N);
         sum += lit * surface_shade(u_lights[i], s.P, s.N, V, s.kd, s.ks, s.r);
     }
+#endif
     light_out = vec4(sum, 1.0);
 }

@@ -61,11 +61,13 @@ void main() {
     // every light of a long cluster list, would count towards llvmpipe's
     // 65535 loop iterations per shader invocation (nested loops share the
     // count) and cut the list short.
+#if VARIANT_SHADOWS
     for (int k = 0; k < MAX_CASTERS; ++k) {
         int i = caster(k);
         if (i < 0) break;
         sum += shadow_visibility(i, s.P, s.N) * shade(i, s, V);
     }
+#endif
     // The global list: the lights with no radius.
     for (int k = 0; k < u_global_count; ++k)
         sum += shade(int(texelFetch(u_clusters, u_index_base + k).r), s, V);

@@ -38,9 +38,12 @@ void main() {
     }
     vec3 c = u_ambient * kd;
     for (int i = 0; i < u_light_count; ++i) {
+#if VARIANT_SHADOWS
         if (casts_shadow(i)) continue;   // in the loop below
+#endif
         c += surface_shade(u_lights[i], v_position, N, V, kd, ks, r);
     }
+#if VARIANT_SHADOWS
     // The lights that cast, with shadow mapping's second pass (notes 01
     // §8.5): how much of light i reaches here.
     for (int k = 0; k < MAX_CASTERS; ++k) {
@@ -49,6 +52,7 @@ void main() {
         float lit = shadow_visibility(i, v_position, N);
         c += lit * surface_shade(u_lights[i], v_position, N, V, kd, ks, r);
     }
+#endif
     c += environment_reflection(u_reflectivity, N, V);   // notes 03, Implementation
     frag_color = output_color(c);
 }

@@ -5,6 +5,12 @@
 //! work of its own per pixel (a lighting pass: its lights; the G-buffer
 //! pass: its triangles and overdraw), and docs/many-lights.md works through
 //! the arithmetic for each.
+//!
+//! A pass that shades every light at every pixel (a deferred or forward
+//! `lighting` pass, `forward`) also gets its cost per light and pixel:
+//! its median over lights x width x height, in ns, the figure that compares
+//! one light evaluation across paths, shader variants (`render.specialize`,
+//! src/frame/variant.rs) and scenes.
 
 use super::BenchRow;
 use std::fmt::Write as _;
@@ -18,22 +24,35 @@ pub fn table(rows: &[BenchRow], floor_ms: f64, size: (u32, u32)) -> String {
     );
     let _ = writeln!(
         s,
-        "  {:<28} {:<16} {:>10} {:>8}",
-        "setting", "pass", "ms", "x floor"
+        "  {:<28} {:<16} {:>10} {:>8} {:>14}",
+        "setting", "pass", "ms", "x floor", "ns/light/px"
     );
+    let pixels = f64::from(w) * f64::from(h);
     for r in rows {
         for (name, stats) in &r.passes {
+            let per_light = if per_light_pass(name) && r.lights > 0 {
+                let ns = stats.median * 1e6 / (r.lights as f64 * pixels);
+                format!("{ns:.2}")
+            } else {
+                "—".to_string()
+            };
             let _ = writeln!(
                 s,
-                "  {:<28} {:<16} {:>10.2} {:>8.2}",
+                "  {:<28} {:<16} {:>10.2} {:>8.2} {:>14}",
                 r.setting,
                 name,
                 stats.median,
-                stats.median / floor_ms
+                stats.median / floor_ms,
+                per_light
             );
         }
     }
     s
+}
+
+/// The passes whose work is a light loop at every pixel.
+fn per_light_pass(name: &str) -> bool {
+    matches!(name, "lighting" | "forward")
 }
 
 #[cfg(test)]
@@ -54,8 +73,27 @@ mod tests {
         let t = table(&[row], 2.0, (100, 100));
         assert!(t.contains("(5 Mpixel/s)"), "{t}");
         let ratios: Vec<&str> = (t.lines().skip(2))
-            .map(|l| l.split_whitespace().last().unwrap())
+            .map(|l| l.split_whitespace().nth(3).unwrap())
             .collect();
         assert_eq!(ratios, ["3.00", "1.50"], "{t}");
+    }
+
+    #[test]
+    fn a_lighting_pass_costs_its_median_over_lights_and_pixels() {
+        // 32 lights at 800x600 in 49.92 ms: 49.92e6 ns / (32 x 480000) = 3.25 ns.
+        let row = BenchRow {
+            setting: "deferred".into(),
+            lights: 32,
+            passes: vec![
+                ("gbuffer".into(), Stats::from_samples(&mut [12.0])),
+                ("lighting".into(), Stats::from_samples(&mut [49.92])),
+            ],
+            ..BenchRow::default()
+        };
+        let t = table(&[row], 2.0, (800, 600));
+        let last: Vec<&str> = (t.lines().skip(2))
+            .map(|l| l.split_whitespace().last().unwrap())
+            .collect();
+        assert_eq!(last, ["—", "3.25"], "{t}");
     }
 }

@@ -16,6 +16,8 @@
 //! - `views`: the camera's view and the reflected views mirrors add.
 //! - `clusters`: tiled shading's light binning on the CPU: each light's
 //!   bounding sphere into screen tiles and depth slices (no GL).
+//! - `variant`: which parts of the lighting model a scene's lighting
+//!   passes compile (shaders specialised to the frame).
 //! - `check`: what `gloss plan` checks without a GL context (the files the
 //!   renderer loads, the light count), with the renderer's own functions.
 
@@ -45,6 +47,7 @@ pub mod technique;
 pub mod texturing;
 pub mod timing;
 pub mod uniforms;
+pub mod variant;
 pub mod views;
 
 pub use technique::{Frame, FrameOrder, Programs, RunPasses, Runs, Stage, Technique};

@@ -34,6 +34,9 @@ pub struct Pass {
     /// src/frame/plan_graph.rs): declared by the passes of notes 03's
     /// pipeline; empty where a pass does not say.
     pub reads: Vec<&'static str>,
+    /// The lighting variant its shader is compiled for, in words
+    /// (src/frame/variant.rs); None for a pass without one.
+    pub variant: Option<String>,
 }
 
 impl Pass {
@@ -57,6 +60,7 @@ impl Pass {
             level: 0,
             needs_depth: true,
             reads: Vec::new(),
+            variant: None,
         }
     }
 
@@ -64,6 +68,14 @@ impl Pass {
     pub fn reading(mut self, targets: &[&'static str]) -> Pass {
         self.reads.extend_from_slice(targets);
         self
+    }
+
+    /// The same pass, its shader compiled as lighting variant `variant`.
+    pub fn with_variant(self, variant: String) -> Pass {
+        Pass {
+            variant: Some(variant),
+            ..self
+        }
     }
 
     /// The same pass, needing no depth-stencil buffer in its target.

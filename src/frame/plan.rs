@@ -301,6 +301,9 @@ impl std::fmt::Display for FramePlan {
                 p.draws,
                 p.code
             )?;
+            if let Some(v) = &p.variant {
+                writeln!(f, "     shader variant: {v}")?;
+            }
         }
         let d = &self.depth_precision;
         writeln!(

@@ -98,6 +98,13 @@ pub struct Programs<'a> {
     pub sources: &'a Sources,
     /// `#define`s every program gets (MAX_LIGHTS).
     pub defines: &'a [(&'a str, String)],
+    /// The frame's lighting variant's `#define`s (src/frame/variant.rs),
+    /// which `build_variant` adds.
+    pub variant: &'a [(&'a str, String)],
+    /// Set when a program was built with `variant`: the renderer then
+    /// builds the technique again (or takes it from its cache) when the
+    /// variant changes.
+    pub variant_used: &'a std::cell::Cell<bool>,
 }
 
 impl Programs<'_> {
@@ -116,6 +123,25 @@ impl Programs<'_> {
             .chain(defines.iter().cloned())
             .collect();
         Program::new(self.gl, self.sources, stages, &all)
+    }
+
+    /// `build`, specialised to the frame's lighting variant: the parts of
+    /// glsl/common/lighting.glsl the scene does not need left out.
+    pub fn build_variant(&self, stages: &[(u32, &str)]) -> Result<Program> {
+        self.build_variant_with(stages, &[])
+    }
+
+    /// `build_variant`, with `#define`s of its own besides.
+    pub fn build_variant_with(
+        &self,
+        stages: &[(u32, &str)],
+        defines: &[(&str, String)],
+    ) -> Result<Program> {
+        self.variant_used.set(true);
+        let all: Vec<(&str, String)> = (self.variant.iter().cloned())
+            .chain(defines.iter().cloned())
+            .collect();
+        self.build_with(stages, &all)
     }
 
     /// `build_with`, for a program whose vertex outputs `varyings` are

@@ -5,6 +5,7 @@
 
 mod output;
 mod passes;
+mod programs;
 
 use output::target_descs;
 pub use output::{Output, stencil_color, stencil_image};
@@ -18,8 +19,9 @@ use crate::frame::shadows::ShadowMaps;
 use crate::frame::targets::{OUTPUT, Targets};
 use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
 use crate::frame::uniforms::FrameUniforms;
+use crate::frame::variant::LightingVariant;
 use crate::frame::views::View;
-use crate::frame::{Frame, Programs, RunPasses};
+use crate::frame::{Frame, RunPasses};
 use crate::gl::buffer::Buffer;
 use crate::gl::debug::DebugLog;
 use crate::gl::framebuffer::Framebuffer;
@@ -31,6 +33,7 @@ use crate::scene::{Camera, RenderSettings, Scene};
 use crate::techniques;
 use anyhow::Result;
 use glow::HasContext;
+use std::collections::HashMap;
 
 pub struct Renderer {
     gl: Gl,
@@ -55,6 +58,12 @@ pub struct Renderer {
     max_lights: usize,
     /// The programs of each registered technique the plan uses, by registry index.
     techniques: Vec<Option<Box<dyn RunPasses>>>,
+    /// The lighting variant the specialised techniques are built for, which
+    /// techniques those are, and their instances built for other variants
+    /// (a settings change and back builds nothing again).
+    variant: LightingVariant,
+    specialised: Vec<bool>,
+    variant_cache: HashMap<(usize, LightingVariant), Box<dyn RunPasses>>,
     /// Measure each pass with glFinish + the CPU clock.
     pub timing: bool,
     /// With `timing`, also GL_TIMESTAMP queries: on where the driver's timer
@@ -136,6 +145,9 @@ impl Renderer {
             sources: sources.clone(),
             max_lights,
             techniques,
+            variant: LightingVariant::GENERAL,
+            specialised: vec![false; techniques::ALL.len()],
+            variant_cache: HashMap::new(),
             timing: false,
             gpu_timers: timer_queries_trustworthy(&unsafe {
                 gl.get_parameter_string(glow::RENDERER)
@@ -143,28 +155,11 @@ impl Renderer {
             last_times: PassTimes::default(),
             debug_groups: passes::has_debug_groups(gl),
         };
-        r.build_planned_techniques()?;
+        let variant = LightingVariant::of(scene, &r.lights);
+        r.build_planned_techniques(variant)?;
         r.upload_lights();
         debug.check(gl, "renderer set-up")?;
         Ok(r)
-    }
-
-    /// Build the programs of every technique the plan uses that has none yet.
-    fn build_planned_techniques(&mut self) -> Result<()> {
-        let defines = [("MAX_LIGHTS", self.max_lights.to_string())];
-        let programs = Programs {
-            gl: &self.gl,
-            sources: &self.sources,
-            defines: &defines,
-        };
-        self.draws.shadow_cull.set(Default::default());
-        for pass in &self.plan.passes {
-            if self.techniques[pass.technique].is_none() {
-                self.techniques[pass.technique] =
-                    Some((techniques::ALL[pass.technique].create)(&programs)?);
-            }
-        }
-        Ok(())
     }
 
     /// Take new render settings (the demo's panel); see `set_scene_values`.
@@ -193,9 +188,12 @@ impl Renderer {
         let plan = FramePlan::new(&self.scene, &lights, techniques::ALL);
         let targets_changed = plan.targets != self.plan.targets;
         let old_plan = std::mem::replace(&mut self.plan, plan);
-        if let Err(e) = self.build_planned_techniques() {
+        let old_variant = self.variant;
+        if let Err(e) = self.build_planned_techniques(LightingVariant::of(&self.scene, &lights)) {
             self.scene = old;
             self.plan = old_plan;
+            // The old variant's instances come back from the cache.
+            self.build_planned_techniques(old_variant)?;
             return Err(e);
         }
         if targets_changed {

@@ -118,6 +118,8 @@ pub(super) struct RenderFile {
     pub(super) billboard_alpha_ref: f32,
     pub(super) sort_transparent: bool,
     pub(super) sort_opaque: bool,
+    /// Lighting shaders specialised to what the scene holds (src/frame/variant.rs).
+    pub(super) specialize: bool,
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
     pub(super) msaa: u32,
@@ -160,6 +162,7 @@ impl Default for RenderFile {
             billboard_alpha_ref: 0.5,
             sort_transparent: true,
             sort_opaque: true,
+            specialize: true,
             post_chain: super::settings::ChainForm::PingPong,
             msaa: 1,
             frustum_culling: true,

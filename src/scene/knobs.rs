@@ -272,6 +272,19 @@ pub static SORT_OPAQUE: Knob = Knob {
     },
 };
 
+pub static SPECIALIZE: Knob = Knob {
+    key: "render.specialize",
+    label: "specialised shaders",
+    help: "compile the lighting passes for what the scene holds (its light types, falloff, shadows, Phong or microfacet: src/frame/variant.rs); off: the general shader, every part for every light",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.specialize),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.specialize = b;
+        }
+    },
+};
+
 pub static FRUSTUM_CULLING: Knob = Knob {
     key: "render.frustum_culling",
     label: "frustum culling",
@@ -335,6 +348,7 @@ pub static ALL: &[&Knob] = &[
     &BILLBOARD_ALPHA_REF,
     &SORT_TRANSPARENT,
     &SORT_OPAQUE,
+    &SPECIALIZE,
     &FRUSTUM_CULLING,
     &WIREFRAME,
     &TEXTURE_FILTER,

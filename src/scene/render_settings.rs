@@ -117,6 +117,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         sort_transparent: r.sort_transparent,
         sort_opaque: r.sort_opaque,
+        specialize: r.specialize,
         post_chain: r.post_chain,
         msaa: {
             if !MSAA_SAMPLES.contains(&r.msaa) {
@@ -191,6 +192,10 @@ pub struct RenderSettings {
     /// Draw opaque objects nearest first (notes 01 §6.2), so that the depth
     /// test rejects hidden fragments before they are shaded.
     pub sort_opaque: bool,
+    /// Compile the lighting passes' shaders for what the scene holds (its
+    /// light types, falloff, shadows, materials: src/frame/variant.rs);
+    /// false: the general shader, every part evaluated for every light.
+    pub specialize: bool,
     /// How the post chain passes its image along (src/scene/post.rs).
     pub post_chain: super::post::ChainForm,
     /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4

@@ -34,6 +34,7 @@ mod far_field;
 mod light_volumes;
 mod numeric_edges;
 mod numeric_sweep;
+mod shader_variants;
 mod stencil_light_volumes;
 mod tiled_shading;
 mod windowed_falloff;

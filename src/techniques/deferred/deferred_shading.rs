@@ -21,6 +21,10 @@
 //! writes the final image. Each pixel is shaded for every light whether the
 //! light reaches it or not: light_volumes.rs removes that waste.
 //!
+//! Both shaders are compiled for the frame's lighting variant
+//! (src/frame/variant.rs): only the light types, falloffs, shadows and
+//! reflectance models the scene holds (`render.specialize`).
+//!
 //! GL state: no depth test, depth writes off, additive blending (per light);
 //! restores depth writes and no blending.
 
@@ -30,6 +34,7 @@ use crate::frame::plan::Pass;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::LIGHTS_BINDING;
+use crate::frame::variant::LightingVariant;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
@@ -77,7 +82,12 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     } else {
         &[gbuffer::NAME]
     };
-    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!()).reading(reads)]
+    let variant = LightingVariant::of(scene, lights).describe();
+    vec![
+        Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())
+            .reading(reads)
+            .with_variant(variant),
+    ]
 }
 
 fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
@@ -110,13 +120,15 @@ struct DeferredShading {
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let program = p.build(&[
+    // Both programs specialised to the frame's lighting variant
+    // (src/frame/variant.rs): the renderer builds them again when it changes.
+    let program = p.build_variant(&[
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (glow::FRAGMENT_SHADER, "deferred/deferred_shading.frag"),
     ])?;
     program.bind_uniform_block("Lights", LIGHTS_BINDING);
     shadows::setup_program(&program);
-    let single_pass = p.build(&[
+    let single_pass = p.build_variant(&[
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (
             glow::FRAGMENT_SHADER,

@@ -41,6 +41,7 @@ use crate::frame::plan::Pass;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
+use crate::frame::variant::LightingVariant;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::gl::texture_buffer::{TextureBuffer, max_texels};
@@ -102,7 +103,8 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
             String::new()
         }
     );
-    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())]
+    let variant = LightingVariant::of(scene, lights).describe();
+    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!()).with_variant(variant)]
 }
 
 fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
@@ -167,9 +169,10 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (glow::FRAGMENT_SHADER, "deferred/tiled_shading.frag"),
     ];
-    let program = p.build(&stages)?;
-    let with_far_field = p.build_with(&stages, &[("FAR_FIELD", "1".into())])?;
-    let far_field_bound = p.build_with(
+    // Specialised to the frame's lighting variant (src/frame/variant.rs).
+    let program = p.build_variant(&stages)?;
+    let with_far_field = p.build_variant_with(&stages, &[("FAR_FIELD", "1".into())])?;
+    let far_field_bound = p.build_variant_with(
         &stages,
         &[("FAR_FIELD", "1".into()), ("FAR_FIELD_BOUND", "1".into())],
     )?;

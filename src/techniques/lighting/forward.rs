@@ -29,6 +29,7 @@ use crate::frame::post::world_target;
 use crate::frame::shadows;
 use crate::frame::targets::TargetDesc;
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
+use crate::frame::variant::LightingVariant;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
@@ -76,7 +77,7 @@ pub const FORWARD: Technique = Technique {
     runs: Runs::PerView,
 };
 
-fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
+fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     if scene.render.path != RenderPath::Forward {
         return vec![];
     }
@@ -90,7 +91,12 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         scene.opaque_objects(),
         scene.lights.len()
     );
-    vec![Pass::new("forward", world_target(scene), draws, file!())]
+    let pass = Pass::new("forward", world_target(scene), draws, file!());
+    // Phong shading's program is specialised to the frame (src/frame/variant.rs).
+    if scene.render.shading == Shading::Phong {
+        return vec![pass.with_variant(LightingVariant::of(scene, lights).describe())];
+    }
+    vec![pass]
 }
 
 fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
@@ -104,7 +110,7 @@ struct Forward {
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let phong = p.build(&[
+    let phong = p.build_variant(&[
         (glow::VERTEX_SHADER, "lighting/forward.vert"),
         (glow::FRAGMENT_SHADER, "lighting/forward.frag"),
     ])?;

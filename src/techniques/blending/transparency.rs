@@ -65,7 +65,8 @@ pub const TRANSPARENCY: Technique = Technique {
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let n = scene.objects.len() - scene.opaque_objects();
-    if n == 0 {
+    // render.transparency chose an order-independent technique instead.
+    if n == 0 || scene.render.transparency != crate::scene::Transparency::Sorted {
         return vec![];
     }
     let order = if scene.render.sort_transparent {

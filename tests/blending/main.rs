@@ -15,4 +15,5 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod order_independent_transparency;
 mod transparency;

@@ -144,7 +144,10 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     shadows::setup_program(&peel);
     let blend = p.build(&[
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
-        (glow::FRAGMENT_SHADER, "blending/depth_peeling_composite.frag"),
+        (
+            glow::FRAGMENT_SHADER,
+            "blending/depth_peeling_composite.frag",
+        ),
     ])?;
     Ok(Box::new(DepthPeeling { peel, blend }))
 }
@@ -181,8 +184,20 @@ impl DepthPeeling {
                 gl.depth_mask(true);
                 let p = &self.peel;
                 draws::set_up(f, p);
-                bind(f, p, "u_opaque_depth", unit::OIT_OPAQUE_DEPTH, opaque_depth(f));
-                bind(f, p, "u_previous_depth", unit::OIT_SECOND, Some(before.colors[1].id));
+                bind(
+                    f,
+                    p,
+                    "u_opaque_depth",
+                    unit::OIT_OPAQUE_DEPTH,
+                    opaque_depth(f),
+                );
+                bind(
+                    f,
+                    p,
+                    "u_previous_depth",
+                    unit::OIT_SECOND,
+                    Some(before.colors[1].id),
+                );
                 p.set_bool("u_first_layer", k == 0);
                 draws::draw(f, p, &items);
                 unbind(f, unit::OIT_OPAQUE_DEPTH);

@@ -128,7 +128,10 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     shadows::setup_program(&accumulate);
     let composite = p.build(&[
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
-        (glow::FRAGMENT_SHADER, "blending/weighted_blended_composite.frag"),
+        (
+            glow::FRAGMENT_SHADER,
+            "blending/weighted_blended_composite.frag",
+        ),
     ])?;
     Ok(Box::new(WeightedBlended {
         accumulate,
@@ -159,14 +162,15 @@ impl WeightedBlended {
             gl.clear_buffer_f32_slice(glow::COLOR, 1, &[0.0, 0.0, 0.0, 0.0]);
             gl.depth_mask(false);
             gl.enable(glow::BLEND);
-            gl.blend_func_separate(
-                glow::ONE,
-                glow::ONE,
-                glow::ZERO,
-                glow::ONE_MINUS_SRC_ALPHA,
-            );
+            gl.blend_func_separate(glow::ONE, glow::ONE, glow::ZERO, glow::ONE_MINUS_SRC_ALPHA);
             draws::set_up(f, p);
-            bind(f, p, "u_opaque_depth", unit::OIT_OPAQUE_DEPTH, opaque_depth(f));
+            bind(
+                f,
+                p,
+                "u_opaque_depth",
+                unit::OIT_OPAQUE_DEPTH,
+                opaque_depth(f),
+            );
             draws::draw(f, p, &items);
             unbind(f, unit::OIT_OPAQUE_DEPTH);
             draws::restore(f);

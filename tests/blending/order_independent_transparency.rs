@@ -289,3 +289,90 @@ fn weighted_blended_error_is_bounded_and_grows_where_its_depth_weights_fail() {
         "the error should grow as the depths meet: apart {apart}, together {together}"
     );
 }
+
+#[test]
+fn every_transparency_restores_the_gl_state_in_every_path() {
+    use gloss::scene::RenderPath;
+    let ctx = common::context(common::backend());
+    for t in Transparency::ALL {
+        for path in [
+            RenderPath::Forward,
+            RenderPath::Deferred,
+            RenderPath::Prepass,
+        ] {
+            let mut scene = common::scene("oit.toml");
+            scene.render.transparency = *t;
+            scene.render.path = path;
+            let changed = common::state_left_changed(&ctx, &scene, 96, 54);
+            assert!(
+                changed.is_empty(),
+                "{t}, {path:?}:\n  {}",
+                changed.join("\n  ")
+            );
+        }
+    }
+}
+
+#[test]
+fn the_plan_has_only_the_chosen_technique_and_its_targets() {
+    use gloss::techniques::plan;
+    let mut scene = common::scene("oit.toml");
+    for (t, passes, targets) in [
+        (Transparency::Sorted, &["transparency"][..], &[][..]),
+        (
+            Transparency::WeightedBlended,
+            &["oit_accumulate", "oit_composite"][..],
+            &["oit_accumulation"][..],
+        ),
+        (
+            Transparency::DepthPeeling,
+            &["peel_layers", "peel_composite"][..],
+            &["peel_even", "peel_odd", "peeled_layers"][..],
+        ),
+    ] {
+        scene.render.transparency = t;
+        let p = plan(&scene);
+        let names: Vec<&str> = p.passes.iter().map(|p| p.name).collect();
+        let all = [
+            "transparency",
+            "oit_accumulate",
+            "oit_composite",
+            "peel_layers",
+            "peel_composite",
+        ];
+        for n in all {
+            assert_eq!(
+                names.contains(&n),
+                passes.contains(&n),
+                "{t}: pass {n} in {names:?}"
+            );
+        }
+        for n in ["oit_accumulation", "peel_even", "peel_odd", "peeled_layers"] {
+            assert_eq!(
+                p.target(n).is_some(),
+                targets.contains(&n),
+                "{t}: target {n}"
+            );
+        }
+    }
+    // No glass: no pass and no target, whatever is chosen.
+    let mut plain = common::scene("default.toml");
+    plain.render.transparency = Transparency::DepthPeeling;
+    let p = plan(&plain);
+    assert!(p.target("peeled_layers").is_none() && !p.has_pass("peel_layers"));
+}
+
+#[test]
+fn msaa_with_an_order_independent_technique_is_refused_by_name() {
+    let camera = "[camera]\neye = [0.0, 0.0, 5.0]\ntarget = [0.0, 0.0, 0.0]\n";
+    let text = format!("{camera}[render]\nmsaa = 4\ntransparency = \"depth_peeling\"\n");
+    let e = Scene::parse(&text, Path::new("msaa.toml")).unwrap_err();
+    let msg = format!("{e:#}");
+    assert!(
+        msg.contains("render.transparency") && msg.contains("render.msaa = 1"),
+        "{msg}"
+    );
+    let text = format!("{camera}[render]\npeel_layers = 65\n");
+    let e = Scene::parse(&text, Path::new("layers.toml")).unwrap_err();
+    assert!(format!("{e:#}").contains("render.peel_layers"), "{e:#}");
+}

@@ -52,7 +52,7 @@ pub const DEPTH_PEELING: Technique = Technique {
         "blending/depth_peeling.frag",
         "blending/depth_peeling_composite.frag",
     ],
-    scene: "scenes/oit.toml",
+    scene: "scenes/oit-depth-peeling.toml",
     docs: "docs/blending/order_independent_transparency.md",
     knobs: &[&knobs::TRANSPARENCY, &knobs::PEEL_LAYERS, &knobs::AMBIENT],
     passes,

@@ -190,6 +190,17 @@ impl Scene {
             "has no effect: no object's material has opacity < 1",
         );
         warn(
+            "sort_transparent",
+            transparent
+                && !r.sort_transparent
+                && r.transparency != super::settings::Transparency::Sorted,
+            "false".into(),
+            &format!(
+                "has no effect with render.transparency = \"{}\": only the sorted pass sorts",
+                r.transparency
+            ),
+        );
+        warn(
             "peel_layers",
             r.peel_layers != 8 && r.transparency != super::settings::Transparency::DepthPeeling,
             r.peel_layers.to_string(),

@@ -55,7 +55,11 @@ pub const TRANSPARENCY: Technique = Technique {
     shaders: &["blending/transparency.vert", "blending/transparency.frag"],
     scene: "scenes/transparency.toml",
     docs: "docs/blending/transparency.md",
-    knobs: &[&knobs::SORT_TRANSPARENT, &knobs::AMBIENT],
+    knobs: &[
+        &knobs::SORT_TRANSPARENT,
+        &knobs::TRANSPARENCY,
+        &knobs::AMBIENT,
+    ],
     passes,
     targets,
     create,

@@ -165,6 +165,7 @@ pub fn bytes_per_pixel(format: u32) -> u64 {
     match format {
         glow::RGBA16F => 8,
         glow::RGBA32F => 16,
+        glow::DEPTH32F_STENCIL8 => 8,
         // The ambient occlusion (techniques/deferred/ambient_light.rs).
         glow::R16F => 2,
         // RGBA8, SRGB8_ALPHA8, DEPTH24_STENCIL8, DEPTH_COMPONENT24 (padded
@@ -190,6 +191,8 @@ pub fn format_name(format: u32) -> &'static str {
         glow::RGBA16F => "RGBA16F",
         glow::RGBA32F => "RGBA32F",
         glow::R16F => "R16F",
+        glow::R32F => "R32F",
+        glow::DEPTH32F_STENCIL8 => "DEPTH32F_STENCIL8",
         glow::DEPTH24_STENCIL8 => "DEPTH24_STENCIL8",
         glow::DEPTH_COMPONENT24 => "DEPTH_COMPONENT24",
         glow::DEPTH_COMPONENT32F => "DEPTH_COMPONENT32F",

@@ -77,6 +77,12 @@ pub mod unit {
     /// AO the ambient term reads in the composite and the light pre-pass's
     /// combine. Those two bind no shadow map, so one of their units serves.
     pub const AMBIENT_OCCLUSION: u32 = 13;
+    /// Order-independent transparency (techniques/blending/weighted_blended.rs,
+    /// depth_peeling.rs): the opaque world's depth, and the two textures a
+    /// pass reads (accumulated colour and weights; a layer and its depth).
+    pub const OIT_OPAQUE_DEPTH: u32 = 3;
+    pub const OIT_FIRST: u32 = 4;
+    pub const OIT_SECOND: u32 = 5;
     /// A post-chain step reads the previous image (`u_image`).
     pub const POST_INPUT: u32 = 0;
 }

@@ -117,6 +117,8 @@ pub(super) struct RenderFile {
     pub(super) billboards: BillboardMode,
     pub(super) billboard_alpha_ref: f32,
     pub(super) sort_transparent: bool,
+    pub(super) transparency: super::settings::Transparency,
+    pub(super) peel_layers: u32,
     pub(super) sort_opaque: bool,
     /// Lighting shaders specialised to what the scene holds (src/frame/variant.rs).
     pub(super) specialize: bool,
@@ -161,6 +163,8 @@ impl Default for RenderFile {
             billboards: BillboardMode::AlphaTest,
             billboard_alpha_ref: 0.5,
             sort_transparent: true,
+            transparency: super::settings::Transparency::Sorted,
+            peel_layers: 8,
             sort_opaque: true,
             specialize: true,
             post_chain: super::settings::ChainForm::PingPong,

@@ -10,10 +10,12 @@ use super::settings::{BillboardMode, ChainForm, DepthFunc, MirrorOrder, RenderPa
 use glam::Vec3;
 
 mod animation;
+mod blending;
 mod lighting;
 mod sky;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
+pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
 pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
     STENCIL_VOLUMES, TILE_SIZE,
@@ -347,6 +349,8 @@ pub static ALL: &[&Knob] = &[
     &BILLBOARDS,
     &BILLBOARD_ALPHA_REF,
     &SORT_TRANSPARENT,
+    &TRANSPARENCY,
+    &PEEL_LAYERS,
     &SORT_OPAQUE,
     &SPECIALIZE,
     &FRUSTUM_CULLING,

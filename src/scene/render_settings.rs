@@ -23,6 +23,10 @@ pub const FAR_FIELD_SCALES: std::ops::RangeInclusive<u32> = 1..=32;
 /// The depth slices `render.depth_slices` takes (1: tiled, no slicing).
 pub const DEPTH_SLICES: std::ops::RangeInclusive<u32> = 1..=64;
 
+/// The layers `render.peel_layers` takes (depth peeling: one pass over the
+/// transparent objects per layer).
+pub const PEEL_LAYERS: std::ops::RangeInclusive<u32> = 1..=64;
+
 /// The sample counts `render.msaa` takes.
 pub const MSAA_SAMPLES: [u32; 4] = [1, 2, 4, 8];
 
@@ -116,6 +120,18 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             a
         },
         sort_transparent: r.sort_transparent,
+        transparency: r.transparency,
+        peel_layers: {
+            if !(PEEL_LAYERS).contains(&r.peel_layers) {
+                bail!(
+                    "render.peel_layers: expected {}..={} layers, found {}",
+                    PEEL_LAYERS.start(),
+                    PEEL_LAYERS.end(),
+                    r.peel_layers
+                );
+            }
+            r.peel_layers
+        },
         sort_opaque: r.sort_opaque,
         specialize: r.specialize,
         post_chain: r.post_chain,
@@ -124,6 +140,15 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
                 bail!(
                     "render.msaa: expected 1, 2, 4 or 8 samples per pixel (1: no MSAA), found {}",
                     r.msaa
+                );
+            }
+            if r.msaa > 1
+                && r.path == RenderPath::Forward
+                && r.transparency != super::settings::Transparency::Sorted
+            {
+                bail!(
+                    "render.transparency = \"{}\" draws into single-sampled targets: set render.msaa = 1, or render.transparency = \"sorted\"",
+                    r.transparency
                 );
             }
             r.msaa
@@ -189,6 +214,10 @@ pub struct RenderSettings {
     /// Draw transparent objects back to front (notes 01 §6.1); false shows
     /// what goes wrong unsorted.
     pub sort_transparent: bool,
+    /// How transparent objects are drawn: sorted per object (the notes),
+    /// weighted blended OIT, or depth peeling of `peel_layers` layers.
+    pub transparency: super::settings::Transparency,
+    pub peel_layers: u32,
     /// Draw opaque objects nearest first (notes 01 §6.2), so that the depth
     /// test rejects hidden fragments before they are shaded.
     pub sort_opaque: bool,

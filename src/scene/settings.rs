@@ -332,3 +332,15 @@ setting! {
         Cylindrical = "cylindrical",
     }
 }
+
+setting! {
+    /// How transparent objects are drawn (docs/blending/order_independent_transparency.md).
+    pub enum Transparency {
+        /// Sorted per object, back to front (notes 01 §6.1): the default.
+        Sorted = "sorted",
+        /// Weighted blended order-independent transparency (McGuire and Bavoil 2013).
+        WeightedBlended = "weighted_blended",
+        /// Depth peeling (Everitt 2001), `render.peel_layers` layers: exact per fragment.
+        DepthPeeling = "depth_peeling",
+    }
+}

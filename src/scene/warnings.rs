@@ -196,6 +196,29 @@ impl Scene {
             "has no effect: no object's material has opacity < 1",
         );
         warn(
+            "transparency",
+            !transparent && r.transparency != super::settings::Transparency::Sorted,
+            format!("\"{}\"", r.transparency),
+            "has no effect: no object's material has opacity < 1",
+        );
+        warn(
+            "sort_transparent",
+            transparent
+                && !r.sort_transparent
+                && r.transparency != super::settings::Transparency::Sorted,
+            "false".into(),
+            &format!(
+                "has no effect with render.transparency = \"{}\": only the sorted pass sorts",
+                r.transparency
+            ),
+        );
+        warn(
+            "peel_layers",
+            r.peel_layers != 8 && r.transparency != super::settings::Transparency::DepthPeeling,
+            r.peel_layers.to_string(),
+            "has no effect: only render.transparency = \"depth_peeling\" peels layers",
+        );
+        warn(
             "post_chain",
             self.post.is_empty() && r.post_chain != super::post::ChainForm::PingPong,
             format!("\"{}\"", r.post_chain),

@@ -58,6 +58,9 @@ pub static ALL: &[&Technique] = &[
     &billboards::billboards::BILLBOARDS,
     &vertex_geometry::particles::PARTICLES,
     &blending::transparency::TRANSPARENCY,
+    // Or, as render.transparency chooses, one of these in its place.
+    &blending::weighted_blended::WEIGHTED_BLENDED,
+    &blending::depth_peeling::DEPTH_PEELING,
     // After every view: first the MSAA resolve (registered before the chain,
     // item 0: the plan's sort by entry is stable), then the post chain, in
     // the scene's [[post]] order.

@@ -10,9 +10,15 @@
 //!   each deferred path within DEFERRED_BOUND), the pass is planned only for
 //!   a scene with a transparent material, and it restores the GL state.
 //!
+//! * order-independent transparency (weighted blended, depth peeling): depth
+//!   peeling within 1e-4 of the over operator composited on the CPU from the
+//!   panes' geometry, weighted blended against depth peeling with stated
+//!   bounds, crossed panes that sorting per object gets wrong.
+//!
 //! Every render runs with GL debug output on and fails on any GL error.
 
 #[path = "../common/mod.rs"]
 mod common;
 
+mod order_independent_transparency;
 mod transparency;

@@ -55,7 +55,11 @@ pub const TRANSPARENCY: Technique = Technique {
     shaders: &["blending/transparency.vert", "blending/transparency.frag"],
     scene: "scenes/transparency.toml",
     docs: "docs/blending/transparency.md",
-    knobs: &[&knobs::SORT_TRANSPARENT, &knobs::AMBIENT],
+    knobs: &[
+        &knobs::SORT_TRANSPARENT,
+        &knobs::TRANSPARENCY,
+        &knobs::AMBIENT,
+    ],
     passes,
     targets,
     create,
@@ -65,7 +69,8 @@ pub const TRANSPARENCY: Technique = Technique {
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let n = scene.objects.len() - scene.opaque_objects();
-    if n == 0 {
+    // render.transparency chose an order-independent technique instead.
+    if n == 0 || scene.render.transparency != crate::scene::Transparency::Sorted {
         return vec![];
     }
     let order = if scene.render.sort_transparent {

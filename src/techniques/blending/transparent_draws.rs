@@ -1,0 +1,125 @@
+//! What the order-independent passes (weighted_blended.rs, depth_peeling.rs)
+//! share with each other: which transparent objects a view draws, the
+//! uniforms of the lit glass shader (glsl/blending/transparent_surface.glsl,
+//! the same as transparency.rs sets), drawing them, and the texture the
+//! opaque world's depth is in. Nothing here changes blending or the depth
+//! test: the technique files do that, in their papers' order.
+
+use crate::frame::Frame;
+use crate::frame::draw_list::DrawList;
+use crate::frame::post::world_target;
+use crate::frame::uniforms::{LIGHTS_BINDING, unit};
+use crate::gl::program::Program;
+use crate::scene::texturing::Interpolation;
+use glow::HasContext;
+
+/// The transparent objects in this view's frustum (notes 01 §6.3), in scene
+/// order: these techniques need no sort.
+pub fn transparent_items(f: &Frame) -> Vec<usize> {
+    let seen = f.in_view();
+    (0..f.draws.items.len())
+        .filter(|&i| f.draws.items[i].transparent && seen.as_ref().is_none_or(|s| s[i]))
+        .collect()
+}
+
+/// The opaque world's depth: the world target's depth-stencil texture.
+pub fn opaque_depth(f: &Frame) -> Option<glow::Texture> {
+    let world = f.targets.get(world_target(f.scene));
+    world.depth_stencil.as_ref().map(|t| t.id)
+}
+
+/// Use `p` and set what every transparent fragment reads: the view, the
+/// lights, the shadow maps, the scene's clip planes.
+///
+/// # Safety
+/// A current GL context; `restore` undoes it.
+pub unsafe fn set_up(f: &Frame, p: &Program) {
+    let (gl, u) = (f.gl, f.uniforms);
+    unsafe {
+        if f.view.clips() {
+            gl.enable(glow::CLIP_DISTANCE0);
+        }
+        for i in 0..f.scene.clip_planes.len() as u32 {
+            gl.enable(glow::CLIP_DISTANCE1 + i);
+        }
+        p.use_program();
+        f.view.set_uniforms(p, u.eye, &f.scene.clip_planes);
+        p.set_mat4("u_view_projection", &u.view_projection);
+        p.set_vec3("u_eye", u.eye);
+        p.set_vec3("u_ambient", f.scene.render.ambient);
+        p.set_i32("u_light_count", u.light_count);
+        p.set_bool("u_output_srgb", u.output_srgb);
+        p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+        p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
+        p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
+        let affine = f.scene.render.interpolation == Interpolation::Affine;
+        p.set_bool("u_affine", affine);
+        gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
+        f.shadows.bind(gl);
+        gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+    }
+}
+
+/// Draw `items` with `p`, each once, both faces (culling is off: the order
+/// of the fragments does not matter to these techniques).
+///
+/// # Safety
+/// A current GL context, after `set_up`.
+pub unsafe fn draw(f: &Frame, p: &Program, items: &[usize]) {
+    for &i in items {
+        let d = &f.draws.items[i];
+        unsafe {
+            f.gl.front_face(f.view.front_face(d.mirrored));
+        }
+        f.draws.bind_textures(f.gl, p, d, &f.scene.render);
+        f.draws.set_object_uniforms(p, d);
+        p.set_f32("u_opacity", d.opacity);
+        f.draws.mesh(d).draw();
+    }
+}
+
+/// Undo `set_up`.
+///
+/// # Safety
+/// A current GL context.
+pub unsafe fn restore(f: &Frame) {
+    let gl = f.gl;
+    unsafe {
+        gl.disable(glow::CLIP_DISTANCE0);
+        for i in 0..f.scene.clip_planes.len() as u32 {
+            gl.disable(glow::CLIP_DISTANCE1 + i);
+        }
+        gl.front_face(glow::CCW);
+        DrawList::unbind_textures(gl);
+        gl.bind_texture(glow::TEXTURE_2D, None);
+        gl.active_texture(glow::TEXTURE0);
+        gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
+        f.shadows.unbind(gl);
+        gl.use_program(None);
+    }
+}
+
+/// Bind `texture` to texture unit `unit` for sampler `name` of `p`.
+///
+/// # Safety
+/// A current GL context, `p` in use.
+pub unsafe fn bind(f: &Frame, p: &Program, name: &str, unit: u32, texture: Option<glow::Texture>) {
+    unsafe {
+        f.gl.active_texture(glow::TEXTURE0 + unit);
+        f.gl.bind_texture(glow::TEXTURE_2D, texture);
+        f.gl.active_texture(glow::TEXTURE0);
+    }
+    p.set_i32(name, unit as i32);
+}
+
+/// Unbind texture unit `unit`.
+///
+/// # Safety
+/// A current GL context.
+pub unsafe fn unbind(f: &Frame, unit: u32) {
+    unsafe {
+        f.gl.active_texture(glow::TEXTURE0 + unit);
+        f.gl.bind_texture(glow::TEXTURE_2D, None);
+        f.gl.active_texture(glow::TEXTURE0);
+    }
+}

@@ -5,15 +5,9 @@
 
 use crate::frame::draw_list::{DrawItem, DrawList};
 use crate::frame::uniforms::unit;
-use crate::gl::Gl;
 use crate::gl::program::Program;
-use crate::gl::texture::{Sampling, Texture};
 use crate::scene::RenderSettings;
-use crate::scene::material::Material;
-use anyhow::Result;
 use glow::HasContext;
-use std::collections::HashMap;
-use std::path::{Path, PathBuf};
 
 impl DrawList {
     /// The object's diffuse texture, if its material has one; with

@@ -29,11 +29,7 @@ use gltf::animation::util::ReadOutputs;
 use std::path::Path;
 
 pub use super::gltf_buffers::MAX_GLTF_BYTES;
-/// The most nodes one glTF file may have.
-pub const MAX_GLTF_NODES: usize = 262_144;
-/// The largest |value| of a node's translation and scale, and of a matrix
-/// entry (an inverse bind matrix): gloss's world extent (1e9).
-pub const MAX_GLTF_VALUE: f32 = 1e9;
+use super::gltf_nodes::MAX_GLTF_VALUE;
 
 /// Most vertices `load_gltf` accepts in the skinned mesh.
 pub const MAX_GLTF_VERTICES: usize = 16_000_000;
@@ -283,7 +279,7 @@ pub fn skin_of(
 /// Every node's rest transform and parent; a node with two parents, or a
 /// cycle, is an error.
 fn read_nodes(file: &gltf::Gltf, name: &str) -> Result<Vec<SkinNode>> {
-    let (nodes, _) = super::gltf_scene::read_nodes(file, name)?;
+    let (nodes, _) = super::gltf_nodes::read_nodes(file, name)?;
     Ok(nodes
         .into_iter()
         .map(|n| SkinNode {

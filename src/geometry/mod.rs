@@ -38,6 +38,7 @@ mod gltf;
 mod gltf_buffers;
 mod gltf_build;
 mod gltf_material;
+mod gltf_nodes;
 mod gltf_scene;
 mod gltf_write;
 mod mtl;

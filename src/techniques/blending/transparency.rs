@@ -38,12 +38,11 @@ use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
 use crate::frame::shadows;
 use crate::frame::targets::TargetDesc;
-use crate::frame::uniforms::{LIGHTS_BINDING, unit};
+use crate::frame::uniforms::LIGHTS_BINDING;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::Scene;
 use crate::scene::knobs;
-use crate::scene::texturing::Interpolation;
 use anyhow::Result;
 use glam::{Mat4, Vec3};
 use glow::HasContext;
@@ -167,31 +166,9 @@ impl RunPasses for Transparency {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
-            if f.view.clips() {
-                gl.enable(glow::CLIP_DISTANCE0);
-            }
-            // The scene's clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
-            for i in 0..f.scene.clip_planes.len() as u32 {
-                gl.enable(glow::CLIP_DISTANCE1 + i);
-            }
-
-            p.use_program();
-            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
-            p.set_mat4("u_view_projection", &u.view_projection);
-            p.set_vec3("u_eye", u.eye);
-            p.set_vec3("u_ambient", f.scene.render.ambient);
-            p.set_i32("u_light_count", u.light_count);
-            p.set_bool("u_output_srgb", u.output_srgb);
-            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
-            // Texture coordinates and vertex colours perspective-correct or
-            // affine (notes 01 §4.1, §5.1).
-            let affine = f.scene.render.interpolation == Interpolation::Affine;
-            p.set_bool("u_affine", affine);
-            gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
-            f.shadows.bind(gl);
-            gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+            // The clip planes, the program and what every transparent
+            // fragment reads, as the order-independent passes set them.
+            super::transparent_draws::set_up(f, p);
             for i in order {
                 let d = &f.draws.items[i];
                 let func = d.depth_func.unwrap_or(f.scene.render.depth_func);

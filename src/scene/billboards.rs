@@ -21,9 +21,8 @@
 //! ```
 
 use super::camera_limits::within_world;
-use super::file::SceneFile;
+use super::checks::finite;
 use super::light_grid::SplitMix;
-use super::resolve::finite;
 use super::settings::BillboardKind;
 use crate::assets;
 use anyhow::{Result, bail};
@@ -89,12 +88,6 @@ pub struct Billboard {
     pub kind: BillboardKind,
 }
 
-/// The sprites (PNG paths, each once, in order of first use) and the
-/// billboards: the `[[billboards]]` list, then each field's, in file order.
-pub(super) fn billboards(f: &SceneFile, base: &Path) -> Result<(Vec<PathBuf>, Vec<Billboard>)> {
-    expand(&f.billboards, &f.billboard_fields, base)
-}
-
 impl super::Scene {
     /// Take new `[[billboards]]` and `[[billboard_fields]]` (the demo edits
     /// them), checked as the loader checks them; on an error nothing changes.
@@ -111,15 +104,17 @@ impl super::Scene {
     }
 }
 
-/// The sprites and billboards of a list and fields (sprites relative to `base`).
-fn expand(
+/// The sprites (PNG paths, each once, in order of first use) and the
+/// billboards of a `[[billboards]]` list, then of each field, in file order
+/// (sprites relative to `base`).
+pub(super) fn expand(
     list: &[BillboardFile],
     fields: &[BillboardFieldFile],
     base: &Path,
 ) -> Result<(Vec<PathBuf>, Vec<Billboard>)> {
     let mut sprites: Vec<PathBuf> = Vec::new();
     let mut sprite_index = |key: &str, written: &str| -> Result<usize> {
-        let p = super::resolve::relative_to(base, written);
+        let p = super::checks::relative_to(base, written);
         if let Some(i) = sprites.iter().position(|s| *s == p) {
             return Ok(i);
         }

@@ -20,7 +20,7 @@
 //! times a 1280-pixel image. docs/post/bloom.md has the test that holds the
 //! rendered spread to these sigmas.
 
-use super::post::Taps;
+use super::post_entry::Taps;
 use anyhow::{Result, anyhow, bail};
 
 /// One of the four blurs: its standard deviation and radius, in

@@ -18,7 +18,7 @@ pub(super) struct SceneFile {
     pub(super) camera: CameraFile,
     /// Split views (src/scene/views.rs).
     #[serde(default)]
-    pub(super) views: Vec<super::views::ViewFile>,
+    pub(super) views: Vec<ViewFile>,
     #[serde(default)]
     pub(super) render: RenderFile,
     #[serde(default)]
@@ -38,7 +38,7 @@ pub(super) struct SceneFile {
     pub(super) ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusionFile>,
     /// Seeded groups of objects (src/scene/object_fields.rs).
     #[serde(default)]
-    pub(super) object_fields: Vec<super::object_fields::ObjectFieldFile>,
+    pub(super) object_fields: Vec<super::object_field_file::ObjectFieldFile>,
     #[serde(default)]
     pub(super) billboards: Vec<BillboardFile>,
     #[serde(default)]
@@ -53,6 +53,15 @@ pub(super) struct SceneFile {
     pub(super) tessellation: Option<super::tessellation::TessellationFile>,
     /// A particle fountain (src/scene/particles.rs).
     pub(super) particles: Option<super::particles::ParticlesFile>,
+}
+
+/// One `[[views]]` entry.
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ViewFile {
+    pub(super) name: Option<String>,
+    pub(super) viewport: [f32; 4],
+    pub(super) camera: Option<CameraFile>,
 }
 
 #[derive(Deserialize, Debug)]
@@ -136,7 +145,7 @@ pub(super) struct RenderFile {
     pub(super) light_maps: bool,
     /// Draw the skybox before the opaque world, depth test off (forward only).
     pub(super) sky_first: bool,
-    pub(super) gbuffer_encoding: super::material::GBufferEncoding,
+    pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
 }
 
 impl Default for RenderFile {
@@ -179,7 +188,7 @@ impl Default for RenderFile {
             normal_mapping: true,
             light_maps: true,
             sky_first: false,
-            gbuffer_encoding: super::material::GBufferEncoding::PlainRgba16f,
+            gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
         }
     }
 }
@@ -262,7 +271,7 @@ pub(super) struct MaterialFile {
     pub(super) shininess: f32,
     /// "phong" (the default) or "microfacet", with notes 03's triple
     /// (src/scene/material.rs).
-    pub(super) model: Option<super::material::Model>,
+    pub(super) model: Option<super::settings::Model>,
     pub(super) alpha: Option<f32>,
     pub(super) eta: Option<f32>,
     pub(super) k_s: Option<f32>,

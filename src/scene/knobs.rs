@@ -11,6 +11,7 @@ use glam::Vec3;
 
 mod animation;
 mod blending;
+pub mod keys;
 mod lighting;
 mod sky;
 mod texturing;
@@ -182,7 +183,7 @@ pub static MIRROR_DEPTH: Knob = Knob {
     help: "how many mirrors deep a reflection goes (mirrors seen in mirrors)",
     kind: Kind::Count {
         min: 1,
-        max: super::resolve::MAX_MIRROR_DEPTH,
+        max: super::checks::MAX_MIRROR_DEPTH,
     },
     get: |r| Value::Count(r.mirror_depth),
     set: |r, v| {
@@ -318,10 +319,10 @@ pub static MSAA: Knob = Knob {
     label: "MSAA samples",
     help: "samples per pixel of the world on the forward path, resolved with glBlitFramebuffer (1: no MSAA)",
     kind: Kind::Choice(&["1", "2", "4", "8"]),
-    get: |r| Value::Choice(index(&super::resolve::MSAA_SAMPLES, r.msaa)),
+    get: |r| Value::Choice(index(&super::checks::MSAA_SAMPLES, r.msaa)),
     set: |r, v| {
         if let Value::Choice(i) = v {
-            r.msaa = super::resolve::MSAA_SAMPLES[i];
+            r.msaa = super::checks::MSAA_SAMPLES[i];
         }
     },
 };

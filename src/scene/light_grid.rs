@@ -1,7 +1,7 @@
 //! `[light_grid]`: many point lights placed by a seeded generator (the notes'
 //! 256-light example), the same lights for the same seed everywhere.
 
-use super::resolve::{finite, non_negative};
+use super::checks::{finite, non_negative};
 use super::{Light, LightGrid, LightKind, Scene, validate_attenuation};
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;

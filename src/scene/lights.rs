@@ -2,9 +2,9 @@
 //! the lights a `[light_grid]` generates; and the attenuation check every
 //! light's Kc, Kl, Kq pass (notes 04's model).
 
+use super::checks::{finite, non_negative};
 use super::file::SceneFile;
 use super::light_grid::generate_lights;
-use super::resolve::{finite, non_negative};
 use super::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D};
 use super::{Light, LightKind};
 use anyhow::{Result, anyhow, bail};

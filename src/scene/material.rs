@@ -18,36 +18,13 @@
 //! alpha, eta or k_s to a Phong material).
 
 use super::file::MaterialFile;
-use super::settings::setting;
-use super::{AlphaTest, Cull, DepthFunc, Winding, texturing};
+use super::texturing::{Texturing, Wrap};
+use super::{AlphaTest, Cull, DepthFunc, Winding};
 use anyhow::{Result, bail};
 use glam::Vec3;
 use std::path::PathBuf;
 
-setting! {
-    /// Which reflectance model a material uses.
-    pub enum Model {
-        /// Notes 01 §8.3: k_d (N . L) + k_s (N . H)^n.
-        Phong = "phong",
-        /// Notes 03: Cook-Torrance with GGX, dielectric Fresnel and Smith masking.
-        Microfacet = "microfacet",
-    }
-}
-
-setting! {
-    /// How the G-buffer stores the microfacet triple (notes 03, Geometry
-    /// Pass; src/math/gbuffer_encoding.rs measures each).
-    pub enum GBufferEncoding {
-        /// The report's: each value above 1 stored as its reciprocal with a
-        /// flag in gConvert, gAlpha in 8 bits (UNORM) as the report's [0, 1]
-        /// range implies.
-        ReportRgba8 = "report_rgba8",
-        /// The report's scheme with gAlpha in half floats.
-        ReportRgba16f = "report_rgba16f",
-        /// The plain values in half floats: no gConvert attachment.
-        PlainRgba16f = "plain_rgba16f",
-    }
-}
+pub use super::settings::{GBufferEncoding, Model};
 
 /// Notes 03's material triple.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -149,7 +126,7 @@ pub struct Material {
     /// Which winding its meshes' front faces have (notes 01 §3.4).
     pub winding: Winding,
     /// How its texture is sampled: wrap, filter, uv transform (notes 01 §5).
-    pub texturing: texturing::Texturing,
+    pub texturing: Texturing,
     /// A specular map (an MTL's map_Ks; LearnOpenGL's "lighting maps"):
     /// linear RGB that multiplies the specular colour (or k_s) per texel;
     /// sampled like the diffuse texture.
@@ -202,5 +179,79 @@ impl Material {
             || self.normal_map.is_some()
             || self.specular_map.is_some()
             || self.alpha_map.is_some()
+    }
+}
+
+/// Check the sampling keys of material `name` (src/scene/file.rs): how its texture
+/// is sampled (src/scene/texturing.rs), checked here with the rest of the
+/// material so that texturing.rs, which the file's tables use, does not
+/// import the file.
+pub(super) fn texturing(name: &str, f: &MaterialFile) -> Result<Texturing> {
+    let key = |k: &str| format!("materials.{name}.{k}");
+    let mut t = Texturing::default();
+    if let Some(v) = &f.wrap {
+        t.wrap = wrap(v).map_err(|e| anyhow::anyhow!("{}: {e}", key("wrap")))?;
+    }
+    if let Some(filter) = f.filter {
+        t.filter = filter;
+    }
+    if let Some(a) = f.anisotropy {
+        if !(a.is_finite() && (1.0..=16.0).contains(&a)) {
+            bail!(
+                "{}: expected a number in 1..=16 (samples along the footprint), found {a}",
+                key("anisotropy")
+            );
+        }
+        t.anisotropy = a;
+    }
+    if let Some(l) = f.max_lod {
+        if !(l.is_finite() && (0.0..=1000.0).contains(&l)) {
+            bail!(
+                "{}: expected a mip level in 0..=1000, found {l}",
+                key("max_lod")
+            );
+        }
+        t.max_lod = l;
+    }
+    for (k, v, out) in [
+        ("uv_scale", f.uv_scale, &mut t.uv_scale),
+        ("uv_offset", f.uv_offset, &mut t.uv_offset),
+    ] {
+        if let Some(v) = v {
+            if v.iter().any(|x| !x.is_finite() || x.abs() > 1e6) {
+                bail!(
+                    "{}: expected finite numbers within ±1e6, found {v:?}",
+                    key(k)
+                );
+            }
+            if k == "uv_scale" && v.contains(&0.0) {
+                bail!(
+                    "{}: a scale of 0 squeezes the texture to one texel; expected nonzero numbers, found {v:?}",
+                    key(k)
+                );
+            }
+            *out = v;
+        }
+    }
+    Ok(t)
+}
+
+fn wrap(v: &toml::Value) -> Result<[Wrap; 2]> {
+    let word = |v: &toml::Value| -> Result<Wrap> {
+        let s = v
+            .as_str()
+            .ok_or_else(|| anyhow::anyhow!("expected a word, found {v}"))?;
+        Wrap::ALL
+            .iter()
+            .copied()
+            .find(|w| w.name() == s)
+            .ok_or_else(|| anyhow::anyhow!("expected clamp, repeat or mirror, found \"{s}\""))
+    };
+    match v {
+        toml::Value::Array(a) if a.len() == 2 => Ok([word(&a[0])?, word(&a[1])?]),
+        toml::Value::Array(a) => {
+            bail!("expected one word or two ([s, t]), found {} words", a.len())
+        }
+        v => Ok([word(v)?; 2]),
     }
 }

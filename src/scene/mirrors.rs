@@ -12,7 +12,7 @@
 //! mirror = { tint = [0.9, 0.95, 1.0], reflectance = 0.9 }
 //! ```
 
-use super::resolve::{finite, non_negative};
+use super::checks::{finite, non_negative};
 use super::{MeshSource, Object};
 use crate::assets;
 use crate::geometry::{self, MeshData};
@@ -123,7 +123,7 @@ pub(super) fn mirror(
     let roughness = match &file.roughness {
         None => None,
         Some(t) => {
-            let p = super::resolve::relative_to(base, t);
+            let p = super::checks::relative_to(base, t);
             if let Some(why) = assets::not_a_file(&p) {
                 bail!("{key}.roughness: file {} {why}", p.display());
             }

@@ -24,51 +24,12 @@
 //! The fields' objects come after the file's `[[objects]]`.
 
 use super::file::{ObjectFile, SceneFile};
+pub use super::object_field_file::ObjectFieldFile;
 use crate::math::lcg::Lcg;
 use anyhow::{Result, bail};
-use serde::Deserialize;
 
 /// The most objects all fields together may make.
 pub const MAX_FIELD_OBJECTS: usize = 100_000;
-
-#[derive(Deserialize, Debug, Clone, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct ObjectFieldFile {
-    #[serde(default = "field_name")]
-    pub name: String,
-    pub count: usize,
-    #[serde(default)]
-    pub children: usize,
-    #[serde(default = "one")]
-    pub seed: u64,
-    pub area: [f32; 4],
-    #[serde(default = "cube")]
-    pub mesh: String,
-    pub material: Option<String>,
-    #[serde(default = "plate")]
-    pub size: [f32; 2],
-    #[serde(default = "cube")]
-    pub child_mesh: String,
-    pub child_material: Option<String>,
-    #[serde(default = "house")]
-    pub child_size: [f32; 2],
-}
-
-fn field_name() -> String {
-    "field".into()
-}
-fn one() -> u64 {
-    1
-}
-fn cube() -> String {
-    "cube".into()
-}
-fn plate() -> [f32; 2] {
-    [8.0, 0.2]
-}
-fn house() -> [f32; 2] {
-    [1.2, 4.0]
-}
 
 /// The objects of every field, as if written in `[[objects]]`.
 pub(super) fn expand(fields: &[ObjectFieldFile]) -> Result<Vec<ObjectFile>> {

@@ -23,7 +23,7 @@
 //! The particles' time is the animation's (`[animation] time`, `--time`).
 
 use super::camera_limits::within_world;
-use super::resolve::{finite, non_negative};
+use super::checks::{finite, non_negative};
 use anyhow::{Result, bail};
 use glam::Vec3;
 use serde::Deserialize;

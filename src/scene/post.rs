@@ -24,6 +24,7 @@
 use super::bloom::Bloom;
 use super::fxaa::Fxaa;
 use super::post_entry::Entry;
+pub use super::post_entry::{MAX_BLUR_RADIUS, Taps};
 pub use super::settings::ChainForm;
 use anyhow::{Result, bail};
 
@@ -63,24 +64,6 @@ impl ToneOperator {
     }
 }
 
-/// How a separable blur reads its taps.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Taps {
-    /// One texel fetch per kernel weight.
-    Direct,
-    /// The linear-filtering trick: one bilinear fetch per pair of texels.
-    Linear,
-}
-
-impl Taps {
-    pub fn name(self) -> &'static str {
-        match self {
-            Taps::Direct => "direct",
-            Taps::Linear => "linear",
-        }
-    }
-}
-
 /// A 3x3 convolution kernel, row by row from the top.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Kernel3 {
@@ -100,8 +83,6 @@ pub const KERNELS: [(&str, [f32; 9]); 3] = [
     ("emboss", [-2.0, -1.0, 0.0, -1.0, 1.0, 1.0, 0.0, 1.0, 2.0]),
 ];
 
-/// The widest blur radius a pass takes (its weights are a uniform array).
-pub const MAX_BLUR_RADIUS: u32 = 127;
 /// The longest chain.
 pub const MAX_POST_PASSES: usize = 16;
 

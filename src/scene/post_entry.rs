@@ -1,9 +1,31 @@
 //! Reading one `[[post]]` entry (src/scene/post.rs): its keys checked
 //! against what its pass takes, each value read with an error that names
-//! the entry, the pass and the key.
+//! the entry, the pass and the key. With what the entries of several
+//! passes share (the blur's limit and its taps), so that the passes' files
+//! (bloom.rs, fxaa.rs) need not import post.rs, which imports them.
 
-use super::post::MAX_BLUR_RADIUS;
 use anyhow::{Result, anyhow, bail};
+
+/// The widest blur radius a pass takes (its weights are a uniform array).
+pub const MAX_BLUR_RADIUS: u32 = 127;
+
+/// How a separable blur reads its taps.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Taps {
+    /// One texel fetch per kernel weight.
+    Direct,
+    /// The linear-filtering trick: one bilinear fetch per pair of texels.
+    Linear,
+}
+
+impl Taps {
+    pub fn name(self) -> &'static str {
+        match self {
+            Taps::Direct => "direct",
+            Taps::Linear => "linear",
+        }
+    }
+}
 
 /// One `[[post]]` table being read, for error messages.
 pub(super) struct Entry<'a> {

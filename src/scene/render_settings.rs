@@ -1,8 +1,8 @@
 //! The `[render]` table, checked: each setting's range, and the error that
 //! names the key and what it takes.
 
+use super::checks::non_negative;
 use super::file::SceneFile;
-use super::resolve::non_negative;
 use super::settings::{
     Accumulation, BillboardMode, DeferredLights, DepthFunc, Falloff, JointStorage, MirrorOrder,
     RenderPath, Shading, SkinningOn,
@@ -11,24 +11,9 @@ use super::texturing::{FilterOverride, Interpolation};
 use anyhow::{Result, bail};
 use glam::Vec3;
 
-/// The deepest mirror recursion a scene may ask for: each level is another
-/// pass over the world, and the stencil buffer's 8 bits count the levels.
-pub const MAX_MIRROR_DEPTH: u32 = 8;
-
-/// The tile edges `render.tile_size` takes, in pixels.
-pub const TILE_SIZES: std::ops::RangeInclusive<u32> = 4..=256;
-/// The far-field scales `render.far_field` takes besides 0 (off): one
-/// sample per k x k pixels.
-pub const FAR_FIELD_SCALES: std::ops::RangeInclusive<u32> = 1..=32;
-/// The depth slices `render.depth_slices` takes (1: tiled, no slicing).
-pub const DEPTH_SLICES: std::ops::RangeInclusive<u32> = 1..=64;
-
-/// The layers `render.peel_layers` takes (depth peeling: one pass over the
-/// transparent objects per layer).
-pub const PEEL_LAYERS: std::ops::RangeInclusive<u32> = 1..=64;
-
-/// The sample counts `render.msaa` takes.
-pub const MSAA_SAMPLES: [u32; 4] = [1, 2, 4, 8];
+pub use super::checks::{
+    DEPTH_SLICES, FAR_FIELD_SCALES, MAX_MIRROR_DEPTH, MSAA_SAMPLES, PEEL_LAYERS, TILE_SIZES,
+};
 
 /// Render settings (the `[render]` table).
 pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
@@ -257,5 +242,5 @@ pub struct RenderSettings {
     /// Light; src/scene/ambient_occlusion.rs). None: the ambient term unoccluded.
     pub ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusion>,
     /// How the G-buffer holds the microfacet triple (notes 03, Geometry Pass).
-    pub gbuffer_encoding: super::material::GBufferEncoding,
+    pub gbuffer_encoding: super::settings::GBufferEncoding,
 }

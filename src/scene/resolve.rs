@@ -11,24 +11,7 @@ use glam::Vec3;
 use std::collections::HashMap;
 use std::path::Path;
 
-pub(super) fn finite(key: &str, v: &[f32]) -> Result<()> {
-    if v.iter().any(|x| !x.is_finite()) {
-        bail!("{key}: expected finite numbers, found {v:?}");
-    }
-    Ok(())
-}
-
-pub(super) fn non_negative(key: &str, v: &[f32]) -> Result<()> {
-    finite(key, v)?;
-    if v.iter().any(|x| *x < 0.0) {
-        bail!("{key}: expected values >= 0, found {v:?}");
-    }
-    Ok(())
-}
-
-pub use super::render_settings::{
-    DEPTH_SLICES, FAR_FIELD_SCALES, MAX_MIRROR_DEPTH, MSAA_SAMPLES, TILE_SIZES,
-};
+use super::checks::{finite, non_negative, relative_to};
 
 /// Checks every section of `f` (read from `path`) and builds the [`Scene`].
 pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
@@ -78,7 +61,8 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
             render.mirror_depth
         );
     }
-    let (sprites, billboards) = super::billboards::billboards(&f, base)?;
+    let (sprites, billboards) =
+        super::billboards::expand(&f.billboards, &f.billboard_fields, base)?;
     let post = super::post::chain(&f.post)?;
 
     let mut animation = super::animation::resolve(&f.animation, &objects)?;
@@ -189,7 +173,7 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             depth_func: m.depth_func,
             cull: m.cull.unwrap_or(super::Cull::Back),
             winding: m.winding.unwrap_or(super::Winding::Ccw),
-            texturing: super::texturing::texturing(n, m)?,
+            texturing: super::material::texturing(n, m)?,
             ..Material::default()
         });
     }
@@ -346,15 +330,4 @@ fn objects(
         }
     }
     Ok((objects, warnings, skins))
-}
-
-/// A path written in a scene file: relative to the file, unless it names a
-/// shipped file (`embedded:scenes/...`, as "save as" writes for a shipped
-/// scene's assets).
-pub(super) fn relative_to(base: &Path, written: &str) -> std::path::PathBuf {
-    if written.starts_with(assets::EMBEDDED) {
-        std::path::PathBuf::from(written)
-    } else {
-        base.join(written)
-    }
 }

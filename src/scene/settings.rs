@@ -344,3 +344,28 @@ setting! {
         DepthPeeling = "depth_peeling",
     }
 }
+
+setting! {
+    /// Which reflectance model a material uses.
+    pub enum Model {
+        /// Notes 01 §8.3: k_d (N . L) + k_s (N . H)^n.
+        Phong = "phong",
+        /// Notes 03: Cook-Torrance with GGX, dielectric Fresnel and Smith masking.
+        Microfacet = "microfacet",
+    }
+}
+
+setting! {
+    /// How the G-buffer stores the microfacet triple (notes 03, Geometry
+    /// Pass; src/math/gbuffer_encoding.rs measures each).
+    pub enum GBufferEncoding {
+        /// The report's: each value above 1 stored as its reciprocal with a
+        /// flag in gConvert, gAlpha in 8 bits (UNORM) as the report's [0, 1]
+        /// range implies.
+        ReportRgba8 = "report_rgba8",
+        /// The report's scheme with gAlpha in half floats.
+        ReportRgba16f = "report_rgba16f",
+        /// The plain values in half floats: no gConvert attachment.
+        PlainRgba16f = "plain_rgba16f",
+    }
+}

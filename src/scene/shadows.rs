@@ -14,7 +14,7 @@
 //! The defaults were picked from `gloss bench` on the shadow scenes (the
 //! Pareto front of time against error; docs/shadows.md has the table).
 
-use super::resolve::{finite, non_negative};
+use super::checks::{finite, non_negative};
 use anyhow::{Result, bail};
 use serde::Deserialize;
 

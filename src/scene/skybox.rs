@@ -75,7 +75,7 @@ pub(super) fn skybox(
     let mut paths = Vec::new();
     let mut sizes = Vec::new();
     for (i, face) in faces.iter().enumerate() {
-        let p = super::resolve::relative_to(base, face);
+        let p = super::checks::relative_to(base, face);
         if let Some(why) = assets::not_a_file(&p) {
             bail!("skybox.faces[{i}]: file {} {why}", p.display());
         }

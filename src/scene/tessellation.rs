@@ -15,7 +15,7 @@
 //! wireframe = false
 //! ```
 
-use super::resolve::{finite, non_negative};
+use super::checks::{finite, non_negative};
 use anyhow::{Result, bail};
 use glam::Vec3;
 use serde::Deserialize;
@@ -122,7 +122,7 @@ pub(super) fn resolve(f: Option<&TessellationFile>, base: &Path) -> Result<Optio
         "per_patch" => false,
         w => bail!("tessellation.edges: expected \"shared\" or \"per_patch\", found \"{w}\""),
     };
-    let displacement = super::resolve::relative_to(base, &t.displacement);
+    let displacement = super::checks::relative_to(base, &t.displacement);
     if let Some(why) = crate::assets::not_a_file(&displacement) {
         bail!(
             "tessellation.displacement: file {} {why}",

@@ -16,10 +16,8 @@
 //! uv_offset = [0.0, 0.0]
 //! ```
 
-use super::file::MaterialFile;
 use super::settings::setting;
 use crate::math::texture_mapping::WrapRule;
-use anyhow::{Result, bail};
 
 setting! {
     /// What a texture coordinate outside [0, 1] reads (notes 01 §5).
@@ -151,76 +149,5 @@ impl Default for Texturing {
             uv_scale: [1.0, 1.0],
             uv_offset: [0.0, 0.0],
         }
-    }
-}
-
-/// Check the sampling keys of material `name` (src/scene/file.rs).
-pub(super) fn texturing(name: &str, f: &MaterialFile) -> Result<Texturing> {
-    let key = |k: &str| format!("materials.{name}.{k}");
-    let mut t = Texturing::default();
-    if let Some(v) = &f.wrap {
-        t.wrap = wrap(v).map_err(|e| anyhow::anyhow!("{}: {e}", key("wrap")))?;
-    }
-    if let Some(filter) = f.filter {
-        t.filter = filter;
-    }
-    if let Some(a) = f.anisotropy {
-        if !(a.is_finite() && (1.0..=16.0).contains(&a)) {
-            bail!(
-                "{}: expected a number in 1..=16 (samples along the footprint), found {a}",
-                key("anisotropy")
-            );
-        }
-        t.anisotropy = a;
-    }
-    if let Some(l) = f.max_lod {
-        if !(l.is_finite() && (0.0..=1000.0).contains(&l)) {
-            bail!(
-                "{}: expected a mip level in 0..=1000, found {l}",
-                key("max_lod")
-            );
-        }
-        t.max_lod = l;
-    }
-    for (k, v, out) in [
-        ("uv_scale", f.uv_scale, &mut t.uv_scale),
-        ("uv_offset", f.uv_offset, &mut t.uv_offset),
-    ] {
-        if let Some(v) = v {
-            if v.iter().any(|x| !x.is_finite() || x.abs() > 1e6) {
-                bail!(
-                    "{}: expected finite numbers within ±1e6, found {v:?}",
-                    key(k)
-                );
-            }
-            if k == "uv_scale" && v.contains(&0.0) {
-                bail!(
-                    "{}: a scale of 0 squeezes the texture to one texel; expected nonzero numbers, found {v:?}",
-                    key(k)
-                );
-            }
-            *out = v;
-        }
-    }
-    Ok(t)
-}
-
-fn wrap(v: &toml::Value) -> Result<[Wrap; 2]> {
-    let word = |v: &toml::Value| -> Result<Wrap> {
-        let s = v
-            .as_str()
-            .ok_or_else(|| anyhow::anyhow!("expected a word, found {v}"))?;
-        Wrap::ALL
-            .iter()
-            .copied()
-            .find(|w| w.name() == s)
-            .ok_or_else(|| anyhow::anyhow!("expected clamp, repeat or mirror, found \"{s}\""))
-    };
-    match v {
-        toml::Value::Array(a) if a.len() == 2 => Ok([word(&a[0])?, word(&a[1])?]),
-        toml::Value::Array(a) => {
-            bail!("expected one word or two ([s, t]), found {} words", a.len())
-        }
-        v => Ok([word(v)?; 2]),
     }
 }

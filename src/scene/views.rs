@@ -10,22 +10,12 @@
 //! camera = { projection = "orthographic", eye = [0.0, 10.0, 0.0], target = [0.0, 0.0, 0.0], up = [0.0, 0.0, -1.0], half_height = 4.0 }
 //! ```
 
+use super::checks::finite;
 use super::file::{CameraFile, SceneFile};
-use super::resolve::finite;
 use super::{Camera, Projection};
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
-use serde::Deserialize;
 use std::path::Path;
-
-/// One `[[views]]` entry.
-#[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields)]
-pub(super) struct ViewFile {
-    name: Option<String>,
-    viewport: [f32; 4],
-    camera: Option<CameraFile>,
-}
 
 /// A rectangle of the frame drawn from its own camera.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,7 +2,7 @@
 //! (docs/blending/order_independent_transparency.md).
 
 use super::{Kind, Knob, Value, index};
-use crate::scene::render_settings::PEEL_LAYERS;
+use crate::scene::checks::PEEL_LAYERS;
 use crate::scene::settings::Transparency;
 
 pub static TRANSPARENCY: Knob = Knob {

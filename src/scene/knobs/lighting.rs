@@ -3,8 +3,7 @@
 //! shading's grid and far field; the G-buffer's material encoding.
 
 use super::{Kind, Knob, Value, index};
-use crate::scene::material::GBufferEncoding;
-use crate::scene::settings::{Accumulation, DeferredLights, Falloff};
+use crate::scene::settings::{Accumulation, DeferredLights, Falloff, GBufferEncoding};
 
 pub static CUTOFF: Knob = Knob {
     key: "render.cutoff",
@@ -80,8 +79,8 @@ pub static TILE_SIZE: Knob = Knob {
     label: "tile size",
     help: "tiled shading: the screen tile's edge in pixels (lights are binned per tile on the CPU)",
     kind: Kind::Count {
-        min: *crate::scene::resolve::TILE_SIZES.start(),
-        max: *crate::scene::resolve::TILE_SIZES.end(),
+        min: *crate::scene::checks::TILE_SIZES.start(),
+        max: *crate::scene::checks::TILE_SIZES.end(),
     },
     get: |r| Value::Count(r.tile_size),
     set: |r, v| {
@@ -97,7 +96,7 @@ pub static FAR_FIELD: Knob = Knob {
     help: "tiled shading: 0 stops each light at its cutoff radius; k adds the light beyond half that radius from a far field sampled once per k x k pixels",
     kind: Kind::Count {
         min: 0,
-        max: *crate::scene::resolve::FAR_FIELD_SCALES.end(),
+        max: *crate::scene::checks::FAR_FIELD_SCALES.end(),
     },
     get: |r| Value::Count(r.far_field),
     set: |r, v| {
@@ -112,8 +111,8 @@ pub static DEPTH_SLICES: Knob = Knob {
     label: "depth slices",
     help: "tiled shading: depth slices between near and far, spaced exponentially (1: tiles only; more: clustered)",
     kind: Kind::Count {
-        min: *crate::scene::resolve::DEPTH_SLICES.start(),
-        max: *crate::scene::resolve::DEPTH_SLICES.end(),
+        min: *crate::scene::checks::DEPTH_SLICES.start(),
+        max: *crate::scene::checks::DEPTH_SLICES.end(),
     },
     get: |r| Value::Count(r.depth_slices),
     set: |r, v| {

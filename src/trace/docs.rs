@@ -8,7 +8,8 @@
 //!
 //! and `block` makes what goes between the two markers: the listing of the
 //! frame the marker's command traces, the source lines to read in the order
-//! the calls came from them, the shaders, and the commands to try it. The
+//! the calls came from them, the shaders, and how to try it (the commands,
+//! the demo's switches and views: src/trace/try_it.rs). The
 //! docs test regenerates every block and fails where a page differs.
 
 use super::listing::{self, Filter};
@@ -164,12 +165,12 @@ pub fn block(ctx: &Headless, request: &Request) -> Result<String> {
             let _ = writeln!(s, "{n}. `glsl/{shader}` ({})", t.name);
         }
     }
-    let scene_name = &request.scene;
-    let _ = write!(
-        s,
-        "\nTry it:\n\n```sh\ngloss {scene_name}                 # the demo: the panel switches, inspects and times each pass\n\
-         gloss plan {scene_name}            # the passes and targets this frame runs\n{}   # this listing\n```\n",
-        request.command()
+    s += &super::try_it::text(
+        &request.scene,
+        &request.set,
+        &scene,
+        &techniques_seen,
+        &request.command(),
     );
     Ok(s)
 }

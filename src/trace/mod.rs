@@ -7,10 +7,15 @@
 //! `listing` prints them (text, or Markdown for docs/), keeping one
 //! technique or pass and folding repeated runs (one object's draw, then the
 //! same calls for every other object); `docs` keeps the listings in docs/
-//! equal to what the frame does.
+//! equal to what the frame does, with how to try each technique (`try_it`);
+//! `coverage` generates docs/README.md's map of the notes against the
+//! registry.
 
+pub mod coverage;
 pub mod docs;
 pub mod listing;
+pub mod notes_sections;
+pub mod try_it;
 
 use crate::gl::Headless;
 use crate::gl::program::Sources;

@@ -18,11 +18,14 @@
 //! * The text points at nothing outside the repository: no `../shared`, no
 //!   issue numbers, no "closing note".
 //! * README.md's test command is the command `.ci/run` runs.
+//! * The map (docs/README.md) and the errata name functions and tests that
+//!   are in the files they name, and test files that hold tests.
 //!
 //! Only std: no Markdown parser, just the few constructs these files use.
 
 mod ci_command;
 mod links;
+mod names;
 mod outside;
 mod paths;
 mod self_check;

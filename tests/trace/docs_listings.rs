@@ -22,7 +22,7 @@ fn pages() -> Vec<std::path::PathBuf> {
 }
 
 /// The first line where `a` and `b` differ, shown.
-fn first_difference(a: &str, b: &str) -> String {
+pub fn first_difference(a: &str, b: &str) -> String {
     let (la, lb): (Vec<_>, Vec<_>) = (a.lines().collect(), b.lines().collect());
     for i in 0..la.len().max(lb.len()) {
         let (x, y) = (la.get(i).copied(), lb.get(i).copied());

@@ -8,13 +8,17 @@
 //! * every constant the source names has its name in the trace's table;
 //! * every `<!-- gloss trace ... -->` block in docs/ equals what the frame
 //!   does now (`GLOSS_BLESS=1` rewrites them), and every technique's page
-//!   has one for its technique.
+//!   has one for its technique, with how to try it in the demo (the keys
+//!   it names are the demo's);
+//! * docs/README.md's map of the notes is the registry's.
 
 #[path = "../common/mod.rs"]
 mod common;
 
 mod docs_listings;
 mod order;
+mod registry;
+mod try_it;
 
 use gloss::gl::Headless;
 

@@ -77,7 +77,17 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         "{}, front faces culled, additive",
         describe_volumes(scene, lights)
     );
-    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())]
+    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!()).reading(reads(scene))]
+}
+
+/// What the volumes' shader samples: the G-buffer, and the shadow maps
+/// when a light casts.
+pub fn reads(scene: &Scene) -> &'static [&'static str] {
+    if scene.lights.iter().any(|l| l.shadow.is_some()) {
+        &[gbuffer::NAME, "shadow map"]
+    } else {
+        &[gbuffer::NAME]
+    }
 }
 
 fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {

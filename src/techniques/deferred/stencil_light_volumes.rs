@@ -31,7 +31,9 @@ use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::{RenderPath, Scene};
 use crate::techniques::deferred::deferred_shading::accumulation_target;
-use crate::techniques::deferred::light_volumes::{describe_volumes, volume_pass, volume_program};
+use crate::techniques::deferred::light_volumes::{
+    self, describe_volumes, volume_pass, volume_program,
+};
 use anyhow::Result;
 use glow::HasContext;
 
@@ -66,7 +68,10 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         "{}, stencil-marked then shaded, additive",
         describe_volumes(scene, lights)
     );
-    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())]
+    vec![
+        Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())
+            .reading(light_volumes::reads(scene)),
+    ]
 }
 
 fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {

@@ -13,7 +13,7 @@
 
 use crate::frame::Technique;
 use crate::frame::lights::FrameLights;
-use crate::frame::targets::Depth;
+use crate::frame::targets::{Depth, HDR, OUTPUT};
 use crate::scene::Scene;
 use crate::scene::knobs::keys::{KNOB_KEYS, KeyEffect};
 use crate::scene::knobs::{self, Kind, Knob, Value};
@@ -118,8 +118,13 @@ pub fn views(t: &Technique, scene: &Scene) -> Vec<String> {
             Some(d) if d.samples > 1 => {}
             Some(d) => {
                 out.extend(d.colors.iter().map(|(a, _)| format!("`{n}.{a}`")));
-                if let Depth::Own(_) = d.depth {
+                if let Depth::Own(format) = d.depth {
                     out.push(format!("`{n}.depth`"));
+                    // The world's target's stencil (where mirrors mark
+                    // their regions), read back by the inspector.
+                    if format == glow::DEPTH24_STENCIL8 && [OUTPUT, HDR].contains(&n) {
+                        out.push(format!("`{n}.stencil`"));
+                    }
                 }
             }
             // The inspector's first views: each casting light's map.

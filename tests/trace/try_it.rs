@@ -145,6 +145,9 @@ fn light_volumes_are_switched_on_by_the_path_and_off_by_the_stencil_knob() {
         "{:?}",
         on.iter().map(|s| s.0.key).collect::<Vec<_>>()
     );
+    // Its stencil marks are a view of their own.
+    let v = views(mirror, &mirrors);
+    assert!(v.contains(&"`output.stencil`".to_string()), "{v:?}");
 }
 
 /// The arm reader sees the key's action, so a changed key table fails.

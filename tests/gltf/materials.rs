@@ -75,6 +75,12 @@ fn metallic_roughness_matches_gltfs_brdf_through_the_cpu_microfacet() {
         metallic,
         roughness: 0.5,
         normal_texture: None,
+        normal_scale: 1.0,
+        metallic_roughness_texture: None,
+        occlusion_texture: None,
+        occlusion_strength: 1.0,
+        emissive: [0.0; 3],
+        emissive_texture: None,
         alpha: AlphaMode::Opaque,
         double_sided: false,
     };

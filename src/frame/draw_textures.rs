@@ -25,7 +25,12 @@ impl DrawList {
     /// (glBindSampler on the diffuse texture's unit).
     pub fn sampler(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Sampler> {
         let [a, b, c] = d.pbr_maps;
-        d.texture.or(d.normal_map).or(d.specular_map).or(a).or(b).or(c)?;
+        d.texture
+            .or(d.normal_map)
+            .or(d.specular_map)
+            .or(a)
+            .or(b)
+            .or(c)?;
         self.samplers.sampler(&d.texturing, r)
     }
 
@@ -110,7 +115,10 @@ impl DrawList {
         p.set_bool("u_has_emissive_map", emissive);
         if metal_rough {
             p.set_vec3("u_base_color", d.pbr.base);
-            p.set_vec2("u_metal_rough", glam::Vec2::new(d.pbr.metallic, d.pbr.roughness));
+            p.set_vec2(
+                "u_metal_rough",
+                glam::Vec2::new(d.pbr.metallic, d.pbr.roughness),
+            );
         }
         p.set_f32("u_occlusion_strength", d.pbr.occlusion_strength);
         p.set_vec3("u_emissive", d.pbr.emissive);

@@ -26,7 +26,8 @@ pub fn gltf_image_path(file: &Path, index: usize) -> PathBuf {
 pub fn gltf_image_bytes(file: &Path, index: usize) -> Result<Vec<u8>> {
     let name = file.display();
     let bytes = assets::read(file, MAX_GLTF_BYTES, "glTF file")?;
-    let doc = gltf::Gltf::from_slice(&bytes).map_err(|e| anyhow!("malformed glTF file {name}: {e}"))?;
+    let doc =
+        gltf::Gltf::from_slice(&bytes).map_err(|e| anyhow!("malformed glTF file {name}: {e}"))?;
     let what = format!("{name}: images[{index}]");
     let Some(image) = doc.images().nth(index) else {
         bail!("{what}: the file has {} images", doc.images().len());

@@ -216,7 +216,8 @@ fn texture(
     // file when its texture loads (gltf_images.rs); its MIME type must be one
     // gloss decodes.
     let inside = |mime: &str| {
-        let readable = image::ImageFormat::from_mime_type(mime).is_some_and(|f| f.reading_enabled());
+        let readable =
+            image::ImageFormat::from_mime_type(mime).is_some_and(|f| f.reading_enabled());
         let at = gltf_image_path(path, image.index());
         (!readable).then(|| {
             format!(
@@ -244,8 +245,7 @@ fn texture(
             if let Some(why) = assets::not_a_file(&file) {
                 return drop(format!("file {} {why}", file.display()));
             }
-            let readable =
-                image::ImageFormat::from_path(&file).is_ok_and(|f| f.reading_enabled());
+            let readable = image::ImageFormat::from_path(&file).is_ok_and(|f| f.reading_enabled());
             if !readable {
                 return drop(format!(
                     "file {}: gloss's image decoder does not read this format",

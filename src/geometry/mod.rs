@@ -38,8 +38,8 @@
 
 mod gltf;
 mod gltf_buffers;
-mod gltf_images;
 mod gltf_build;
+mod gltf_images;
 mod gltf_material;
 mod gltf_nodes;
 mod gltf_scene;
@@ -55,8 +55,8 @@ mod volumes;
 
 pub use gltf::{MAX_GLTF_BYTES, MAX_GLTF_VERTICES, load_gltf};
 pub use gltf_buffers::{MAX_ACCESSOR_BYTES, SUPPORTED_EXTENSIONS};
-pub use gltf_images::{gltf_image_bytes, gltf_image_path};
 pub use gltf_build::GltfBuilder;
+pub use gltf_images::{gltf_image_bytes, gltf_image_path};
 pub use gltf_material::{AlphaMode, GltfMaterial, GltfTexture};
 pub use gltf_scene::{
     GltfNode, GltfPrimitive, GltfScene, MAX_GLTF_NODES, MAX_GLTF_VALUE, load_gltf_scene,

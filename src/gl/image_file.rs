@@ -90,7 +90,8 @@ fn reader(path: &Path) -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
         (Some(f), _) => Box::new(std::io::Cursor::new(f.contents())),
         // An image inside a glTF file (src/geometry/gltf_images.rs).
         (None, Some((file, i))) => Box::new(std::io::Cursor::new(
-            crate::geometry::gltf_image_bytes(&file, i).context("cannot read texture")?,
+            crate::geometry::gltf_image_bytes(&file, i)
+                .with_context(|| format!("cannot read texture {}", path.display()))?,
         )),
         (None, None) => Box::new(std::io::BufReader::new(
             std::fs::File::open(path)

@@ -26,37 +26,73 @@ pub fn gltf_image_path(file: &Path, index: usize) -> PathBuf {
 pub fn gltf_image_bytes(file: &Path, index: usize) -> Result<Vec<u8>> {
     let name = file.display();
     let bytes = assets::read(file, MAX_GLTF_BYTES, "glTF file")?;
-    let doc =
-        gltf::Gltf::from_slice(&bytes).map_err(|e| anyhow!("malformed glTF file {name}: {e}"))?;
     let what = format!("{name}: images[{index}]");
-    let Some(image) = doc.images().nth(index) else {
-        bail!("{what}: the file has {} images", doc.images().len());
+    // The gltf crate panics on some malformed files (a view image without
+    // its MIME type, an index it did not check): every call into it runs
+    // under gltf::quietly, and a panic is an error.
+    let found = super::gltf::quietly(|| -> Result<(Source, Option<Vec<u8>>)> {
+        let doc = gltf::Gltf::from_slice(&bytes)
+            .map_err(|e| anyhow!("malformed glTF file {name}: {e}"))?;
+        let Some(image) = doc.images().nth(index) else {
+            bail!("{what}: the file has {} images", doc.images().len());
+        };
+        let source = match image.source() {
+            gltf::image::Source::Uri { uri, .. } => Source::Uri(uri.to_owned()),
+            gltf::image::Source::View { view, .. } => Source::View {
+                view: view.index(),
+                buffer: view.buffer().index(),
+                uri: match view.buffer().source() {
+                    gltf::buffer::Source::Bin => None,
+                    gltf::buffer::Source::Uri(u) => Some(u.to_owned()),
+                },
+                start: view.offset(),
+                len: view.length(),
+            },
+        };
+        Ok((source, doc.blob.clone()))
+    });
+    let (source, blob) = match found {
+        Ok(r) => r?,
+        Err(_) => bail!("malformed glTF file {name}: the gltf crate could not read it"),
     };
-    match image.source() {
-        gltf::image::Source::Uri { uri, .. } => uri_bytes(uri, file, &what, "glTF image"),
-        gltf::image::Source::View { view, .. } => {
-            let b = view.buffer();
-            let owned;
-            let data: &[u8] = match b.source() {
-                gltf::buffer::Source::Bin => doc.blob.as_deref().ok_or_else(|| {
+    match source {
+        Source::Uri(uri) => uri_bytes(&uri, file, &what, "glTF image"),
+        Source::View {
+            view,
+            buffer,
+            uri,
+            start,
+            len,
+        } => {
+            let data = match uri {
+                None => blob.ok_or_else(|| {
                     anyhow!("{what}: its buffer is the binary chunk, which the file lacks")
                 })?,
-                gltf::buffer::Source::Uri(uri) => {
-                    let w = format!("{what}: buffers[{}]", b.index());
-                    owned = uri_bytes(uri, file, &w, "glTF buffer")?;
-                    &owned
+                Some(uri) => {
+                    let w = format!("{what}: buffers[{buffer}]");
+                    uri_bytes(&uri, file, &w, "glTF buffer")?
                 }
             };
-            let (start, len) = (view.offset(), view.length());
             let end = start.checked_add(len).unwrap_or(usize::MAX);
             if end > data.len() {
                 bail!(
-                    "{what}: bufferViews[{}] ends at byte {end}, past its buffer's {}",
-                    view.index(),
+                    "{what}: bufferViews[{view}] ends at byte {end}, past its buffer's {}",
                     data.len()
                 );
             }
             Ok(data[start..end].to_vec())
         }
     }
+}
+
+/// Where an image's bytes are, as the file says.
+enum Source {
+    Uri(String),
+    View {
+        view: usize,
+        buffer: usize,
+        uri: Option<String>,
+        start: usize,
+        len: usize,
+    },
 }

@@ -60,10 +60,14 @@ fn mutate(bytes: &[u8], edits: &[Edit], ihdr: Option<usize>) -> Vec<u8> {
                 let piece = b[i..(i + n).min(b.len())].to_vec();
                 b.splice(i..i, piece);
             }
+            // The IHDR's width and height, its CRC made right again so the
+            // decoder reads the size.
             Edit::Size(w, h) => {
-                if let Some(at) = ihdr.filter(|&at| b.len() >= at + 8) {
+                if let Some(at) = ihdr.filter(|&at| b.len() >= at + 17) {
                     b[at..at + 4].copy_from_slice(&w.to_be_bytes());
                     b[at + 4..at + 8].copy_from_slice(&h.to_be_bytes());
+                    let crc = crate::png::crc32(&b[at - 4..at + 13]);
+                    b[at + 13..at + 17].copy_from_slice(&crc.to_be_bytes());
                 }
             }
             _ => {}

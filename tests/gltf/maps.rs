@@ -58,7 +58,10 @@ fn load(name: &str, b: &GltfBuilder, ambient: f32, light: bool) -> Scene {
     let s = Scene::load(&d.join("scene.toml")).unwrap();
     // A metal with a colour is named for its tint (docs/gltf.md); nothing else.
     let w = s.warnings();
-    assert!(w.iter().all(|w| w.contains("the metal's tint")), "{name}: {w:?}");
+    assert!(
+        w.iter().all(|w| w.contains("the metal's tint")),
+        "{name}: {w:?}"
+    );
     s
 }
 

@@ -73,7 +73,7 @@ pub fn gltf_image_bytes(file: &Path, index: usize) -> Result<Vec<u8>> {
                     uri_bytes(&uri, file, &w, "glTF buffer")?
                 }
             };
-            let end = start.checked_add(len).unwrap_or(usize::MAX);
+            let end = start.saturating_add(len);
             if end > data.len() {
                 bail!(
                     "{what}: bufferViews[{view}] ends at byte {end}, past its buffer's {}",

@@ -18,6 +18,7 @@ uniform sampler2D u_specular_map;      // unit::SPECULAR_MAP, linear data
 // metallic-roughness map, c_d and the microfacet triple are taken per
 // texel from baseColor, metallic = metallicFactor B and roughness =
 // roughnessFactor G; occlusion scales the ambient term; emission is added.
+uniform bool u_pbr;                    // false: none of the below (one uniform per draw)
 uniform bool u_has_metal_rough_map;
 uniform sampler2D u_metal_rough_map;   // unit::METAL_ROUGH_MAP, linear
 uniform vec3 u_base_color;             // baseColorFactor.rgb
@@ -40,7 +41,7 @@ vec2 material_metal_rough(vec2 uv) {
 }
 
 vec3 material_diffuse(vec2 uv) {
-    if (u_has_metal_rough_map) {
+    if (u_pbr && u_has_metal_rough_map) {
         return material_base_color(uv) * (1.0 - material_metal_rough(uv).x);   // c_d
     }
     return u_has_diffuse_texture ? u_diffuse * texture(u_diffuse_texture, uv).rgb : u_diffuse;
@@ -53,7 +54,7 @@ vec3 material_diffuse(vec2 uv) {
 //   eta = (1 + sqrt F0) / (1 - sqrt F0) in 1..=10, k_s = F0 / ((eta - 1) / (eta + 1))^2
 //   alpha = roughness^2
 vec3 material_triple(vec2 uv) {
-    if (!u_has_metal_rough_map) {
+    if (!(u_pbr && u_has_metal_rough_map)) {
         return vec3(u_microfacet_alpha, u_microfacet_eta, u_microfacet_k_s);
     }
     vec2 mr = material_metal_rough(uv);
@@ -68,7 +69,7 @@ vec3 material_triple(vec2 uv) {
 
 // A metallic-roughness map's triple at uv put into r and ks (nothing without one).
 void material_metal_rough_at(vec2 uv, inout vec3 ks, inout Reflectance r) {
-    if (u_has_metal_rough_map) {
+    if (u_pbr && u_has_metal_rough_map) {
         vec3 t = material_triple(uv);
         r.alpha = t.x;
         r.eta = t.y;
@@ -78,11 +79,12 @@ void material_metal_rough_at(vec2 uv, inout vec3 ks, inout Reflectance r) {
 
 // What the ambient term is multiplied by: 1 + strength (R - 1), 1 without a map.
 float material_occlusion(vec2 uv) {
-    return u_has_occlusion_map ? 1.0 + u_occlusion_strength * (texture(u_occlusion_map, uv).r - 1.0) : 1.0;
+    return u_pbr && u_has_occlusion_map ? 1.0 + u_occlusion_strength * (texture(u_occlusion_map, uv).r - 1.0) : 1.0;
 }
 
 // The light the surface emits: emissiveFactor x emissiveTexture.
 vec3 material_emission(vec2 uv) {
+    if (!u_pbr) return vec3(0.0);
     return u_has_emissive_map ? u_emissive * texture(u_emissive_map, uv).rgb : u_emissive;
 }
 

@@ -38,6 +38,6 @@ void main() {
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 mirrored = environment_reflection(u_reflectivity, N, normalize(u_eye - v_position));
     vec3 ks = material_specular() * material_specular_map(uv);
-    if (u_has_metal_rough_map) ks = vec3(material_triple(uv).z);
+    if (u_pbr && u_has_metal_rough_map) ks = vec3(material_triple(uv).z);
     frag_color = output_color(material_diffuse(uv) * surface_color() * (ambient + D) + ks * S + mirrored + material_emission(uv));
 }

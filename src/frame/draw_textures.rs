@@ -86,7 +86,8 @@ impl DrawList {
 
     /// glTF's maps (src/scene/gltf_material.rs), with the material's
     /// sampler: metallic-roughness, occlusion and emissive on their units,
-    /// each bound only where the material has it, and their factors.
+    /// each bound only where the material has it, and their factors; for
+    /// a material with none of them and no emission, `u_pbr` false alone.
     fn bind_pbr_maps(
         &self,
         gl: &glow::Context,
@@ -94,6 +95,11 @@ impl DrawList {
         d: &DrawItem,
         sampler: Option<glow::Sampler>,
     ) {
+        let pbr = d.pbr_maps.iter().any(Option::is_some) || d.pbr.emissive != glam::Vec3::ZERO;
+        p.set_bool("u_pbr", pbr);
+        if !pbr {
+            return;
+        }
         let maps = [
             ("u_metal_rough_map", unit::METAL_ROUGH_MAP),
             ("u_occlusion_map", unit::OCCLUSION_MAP),

@@ -56,6 +56,9 @@ pub fn not_a_file(path: &Path) -> Option<String> {
     if embedded(path).is_some() {
         return None;
     }
+    if let Some((file, _)) = gltf_image(path) {
+        return not_a_file(&file);
+    }
     if path.to_str().is_some_and(|s| s.starts_with(EMBEDDED)) {
         return Some("does not exist (gloss embeds no such file)".into());
     }
@@ -78,6 +81,18 @@ pub fn not_a_file(path: &Path) -> Option<String> {
         Err(e) => format!("cannot be read: {e}"),
     };
     Some(format!("is a symbolic link to {to}, which {which}"))
+}
+
+/// An image inside a glTF file, as a material names it: `FILE#images[N]`
+/// (src/geometry/gltf_images.rs) gives the glTF file and N.
+pub fn gltf_image(path: &Path) -> Option<(PathBuf, usize)> {
+    let s = path.to_str()?;
+    let (file, rest) = s.rsplit_once("#images[")?;
+    let index = rest.strip_suffix(']')?;
+    if file.is_empty() || index.is_empty() || !index.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    Some((PathBuf::from(file), index.parse().ok()?))
 }
 
 /// `None` for a regular file, else what the file type is, in words.

@@ -30,7 +30,8 @@ vec4 transparent_color() {
     vec3 kd = material_diffuse(uv) * surface_color();
     vec3 ks = material_specular() * material_specular_map(uv);
     Reflectance r = material_reflectance();
-    vec3 c = u_ambient * kd;
+    material_metal_rough_at(uv, ks, r);
+    vec3 c = u_ambient * kd * material_occlusion(uv) + material_emission(uv);
     for (int i = 0; i < u_light_count; ++i) {
         if (casts_shadow(i)) continue;   // in the loop below
         c += surface_shade(u_lights[i], v_position, N, V, kd, ks, r);

@@ -43,6 +43,20 @@ void read_reflectance(ivec2 texel, inout Surface s) {
     }
 }
 
+// The light a pixel emits: a microfacet pixel's gSpecular rgb (its
+// specular weight is k_s in gAlpha), none for a Phong pixel.
+vec3 read_emission(vec2 uv) {
+    if (u_gbuffer_material == GBUFFER_MATERIAL_NONE) {
+        return vec3(0.0);
+    }
+    ivec2 texel = ivec2(uv * vec2(textureSize(u_gbuffer_normal, 0)));
+    vec4 convert = u_gbuffer_material == GBUFFER_MATERIAL_REPORT
+        ? texelFetch(u_gbuffer_convert, texel, 0) : vec4(0.0);
+    vec3 t;
+    bool microfacet = decode_material(texelFetch(u_gbuffer_alpha, texel, 0), convert, t);
+    return microfacet ? texture(u_gbuffer_specular, uv).rgb : vec3(0.0);
+}
+
 vec2 gbuffer_uv() {
     return gl_FragCoord.xy / textureSize(u_gbuffer_normal, 0).xy;
 }

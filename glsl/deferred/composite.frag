@@ -25,10 +25,11 @@ void main() {
         frag_color = output_color(u_background);
         return;
     }
-    vec3 kd = texture(u_gbuffer_albedo, uv).rgb;
-    vec3 ambient = u_ambient * kd;
+    vec4 albedo = texture(u_gbuffer_albedo, uv);
+    vec3 ambient = u_ambient * albedo.rgb * albedo.a;   // a: the material's occlusion map
     if (u_has_ambient_occlusion) {
         ambient *= texture(u_ambient_occlusion, uv).r;
     }
-    frag_color = output_color(ambient + (u_has_light ? texture(u_light, uv).rgb : vec3(0.0)));
+    vec3 emitted = read_emission(uv);
+    frag_color = output_color(ambient + emitted + (u_has_light ? texture(u_light, uv).rgb : vec3(0.0)));
 }

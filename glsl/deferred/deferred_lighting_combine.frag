@@ -31,11 +31,13 @@ void main() {
         D = texture(u_diffuse_light, pixel).rgb;
         S = texture(u_specular_light, pixel).rgb;
     }
-    vec3 ambient = u_ambient;
+    vec3 ambient = u_ambient * material_occlusion(uv);
     if (u_has_ambient_occlusion) {
         ambient *= texture(u_ambient_occlusion, gl_FragCoord.xy / textureSize(u_ambient_occlusion, 0).xy).r;
     }
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 mirrored = environment_reflection(u_reflectivity, N, normalize(u_eye - v_position));
-    frag_color = output_color(material_diffuse(uv) * surface_color() * (ambient + D) + material_specular() * material_specular_map(uv) * S + mirrored);
+    vec3 ks = material_specular() * material_specular_map(uv);
+    if (u_pbr && u_has_metal_rough_map) ks = vec3(material_triple(uv).z);
+    frag_color = output_color(material_diffuse(uv) * surface_color() * (ambient + D) + ks * S + mirrored + material_emission(uv));
 }

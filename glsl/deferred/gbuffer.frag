@@ -1,8 +1,8 @@
 #version 330 core
 // G-buffer pass: write the surface's data, no lighting.
 //   0: normal (world, unit) + shininess   RGBA16F
-//   1: diffuse albedo                     SRGB8_ALPHA8 (GL_FRAMEBUFFER_SRGB on)
-//   2: specular colour                    SRGB8_ALPHA8
+//   1: diffuse albedo, ambient occlusion  SRGB8_ALPHA8 (GL_FRAMEBUFFER_SRGB on)
+//   2: specular colour (a microfacet pixel: its emission), reflectivity  SRGB8_ALPHA8
 //   depth: the depth buffer itself; position is rebuilt from it.
 //   3: gAlpha, 4: gConvert: notes 03's microfacet triple (common/gbuffer_material.glsl),
 //      when the scene has a microfacet material; at 1 and 2 in the light
@@ -34,8 +34,12 @@ void main() {
     alpha_test(material_alpha(uv));
     // The normal after the normal map (notes 01 §8.4) is what the lights read.
     g_normal_shininess = vec4(bumped_normal(safe_normal(v_normal, v_position), uv), u_shininess);
-    g_albedo = vec4(material_diffuse(uv) * surface_color(), 1.0);
-    g_specular = vec4(u_specular * material_specular_map(uv), u_reflectivity);
-    vec3 triple = vec3(u_microfacet_alpha, u_microfacet_eta, u_microfacet_k_s);
+    // Alpha: what the ambient term is multiplied by (glTF's occlusion).
+    g_albedo = vec4(material_diffuse(uv) * surface_color(), material_occlusion(uv));
+    // A microfacet pixel's specular weight is k_s in gAlpha: its rgb holds
+    // the emitted light instead (glTF's emissive; the composite adds it).
+    vec3 specular = u_microfacet ? material_emission(uv) : u_specular * material_specular_map(uv);
+    g_specular = vec4(specular, u_reflectivity);
+    vec3 triple = material_triple(uv);
     encode_material(triple, u_microfacet, g_alpha, g_convert);
 }

@@ -29,14 +29,15 @@ void main() {
     vec3 kd = material_diffuse(uv) * surface_color();
     vec3 ks = material_specular() * material_specular_map(uv);
     Reflectance r = material_reflectance();
+    material_metal_rough_at(uv, ks, r);
     // Static lighting (notes 01 §8.2): the diffuse light baked when the
     // scene loaded, read over the mesh's own uvs; no light loop.
     if (u_has_light_map) {
         vec2 mesh_uv = (uv - u_uv_transform.zw) / u_uv_transform.xy;
-        frag_color = output_color(kd * (u_ambient + texture(u_light_map, mesh_uv).rgb));
+        frag_color = output_color(kd * (u_ambient + texture(u_light_map, mesh_uv).rgb) + material_emission(uv));
         return;
     }
-    vec3 c = u_ambient * kd;
+    vec3 c = u_ambient * kd * material_occlusion(uv) + material_emission(uv);
     for (int i = 0; i < u_light_count; ++i) {
 #if VARIANT_SHADOWS
         if (casts_shadow(i)) continue;   // in the loop below

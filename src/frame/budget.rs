@@ -175,6 +175,11 @@ fn items(scene: &Scene, targets: &[TargetDesc], width: u32, height: u32) -> Vec<
         for (key, p) in [
             ("diffuse_texture", &m.diffuse_texture),
             ("normal_map", &m.normal_map),
+            ("specular_map", &m.specular_map),
+            ("alpha_map", &m.alpha_map),
+            ("metallic_roughness", &m.pbr.metallic_roughness),
+            ("occlusion", &m.pbr.occlusion),
+            ("emissive_map", &m.pbr.emissive_map),
         ] {
             let Some(p) = p.as_ref().filter(|p| !seen.contains(*p)) else {
                 continue;

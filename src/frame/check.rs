@@ -43,6 +43,9 @@ pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
             &m.normal_map,
             &m.specular_map,
             &m.alpha_map,
+            &m.pbr.metallic_roughness,
+            &m.pbr.occlusion,
+            &m.pbr.emissive_map,
         ];
         for p in maps.into_iter().flatten() {
             if textures.insert(p) {

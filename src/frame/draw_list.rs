@@ -48,6 +48,10 @@ pub struct DrawItem {
     pub normal_scale: f32,
     /// The material's specular map, if it has one (`Material::specular_map`).
     pub specular_map: Option<usize>,
+    /// glTF's metallic-roughness, occlusion and emissive maps, if the
+    /// material has them, and its factors (`Material::pbr`).
+    pub pbr_maps: [Option<usize>; 3],
+    pub pbr: crate::scene::material::PbrMaps,
     /// The object's baked light map (notes 01 §8.2), if it has one.
     pub light_map: Option<usize>,
     /// How the texture is sampled, and the uv transform (notes 01 §5).
@@ -155,6 +159,16 @@ impl DrawList {
             let [normal_map, specular_map] =
                 [&m.normal_map, &m.specular_map].map(|p| p.as_ref().map(|p| load(p, false)));
             let (normal_map, specular_map) = (normal_map.transpose()?, specular_map.transpose()?);
+            // glTF's maps: metallic-roughness and occlusion are data, emission colour.
+            let pbr = &m.pbr;
+            let pbr_maps = [
+                (&pbr.metallic_roughness, false),
+                (&pbr.occlusion, false),
+                (&pbr.emissive_map, true),
+            ]
+            .map(|(p, srgb)| p.as_ref().map(|p| load(p, srgb)).transpose());
+            let [a, b, c] = pbr_maps;
+            let pbr_maps = [a?, b?, c?];
             let roughness = match o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
                 None => None,
                 Some(p) => {
@@ -177,6 +191,8 @@ impl DrawList {
                 normal_map,
                 normal_scale: m.normal_scale,
                 specular_map,
+                pbr_maps,
+                pbr: m.pbr.clone(),
                 light_map: light_maps[object].take().map(|t| {
                     textures.push(t);
                     textures.len() - 1
@@ -260,6 +276,7 @@ impl DrawList {
             d.alpha_test = m.alpha_test.code();
             d.alpha_ref = m.alpha_ref;
             d.normal_scale = m.normal_scale;
+            d.pbr = m.pbr.clone();
             d.opacity = m.opacity;
             d.reflectivity = m.reflectivity;
             d.cull = m.cull;

@@ -24,7 +24,13 @@ impl DrawList {
     /// The sampler object the object's texture is read with under `r`
     /// (glBindSampler on the diffuse texture's unit).
     pub fn sampler(&self, d: &DrawItem, r: &RenderSettings) -> Option<glow::Sampler> {
-        d.texture.or(d.normal_map).or(d.specular_map)?;
+        let [a, b, c] = d.pbr_maps;
+        d.texture
+            .or(d.normal_map)
+            .or(d.specular_map)
+            .or(a)
+            .or(b)
+            .or(c)?;
         self.samplers.sampler(&d.texturing, r)
     }
 
@@ -71,16 +77,66 @@ impl DrawList {
             gl.bind_texture(glow::TEXTURE_2D, self.texture(d, r));
             gl.bind_sampler(unit::DIFFUSE_TEXTURE, sampler);
         }
+        self.bind_pbr_maps(gl, p, d, sampler);
         p.set_bool("u_has_normal_map", normal_map.is_some());
         p.set_f32("u_normal_scale", d.normal_scale);
         p.set_bool("u_has_specular_map", specular_map.is_some());
         p.set_bool("u_has_light_map", light_map.is_some());
     }
 
+    /// glTF's maps (src/scene/gltf_material.rs), with the material's
+    /// sampler: metallic-roughness, occlusion and emissive on their units,
+    /// each bound only where the material has it, and their factors; for
+    /// a material with none of them and no emission, `u_pbr` false alone.
+    fn bind_pbr_maps(
+        &self,
+        gl: &glow::Context,
+        p: &Program,
+        d: &DrawItem,
+        sampler: Option<glow::Sampler>,
+    ) {
+        let pbr = d.pbr_maps.iter().any(Option::is_some) || d.pbr.emissive != glam::Vec3::ZERO;
+        p.set_bool("u_pbr", pbr);
+        if !pbr {
+            return;
+        }
+        let maps = [
+            ("u_metal_rough_map", unit::METAL_ROUGH_MAP),
+            ("u_occlusion_map", unit::OCCLUSION_MAP),
+            ("u_emissive_map", unit::EMISSIVE_MAP),
+        ];
+        for ((name, u), t) in maps.into_iter().zip(d.pbr_maps) {
+            if let Some(t) = t {
+                unsafe {
+                    gl.active_texture(glow::TEXTURE0 + u);
+                    gl.bind_texture(glow::TEXTURE_2D, Some(self.textures[t].id));
+                    gl.bind_sampler(u, sampler);
+                }
+                p.set_i32(name, u as i32);
+            }
+        }
+        let [metal_rough, occlusion, emissive] = d.pbr_maps.map(|t| t.is_some());
+        p.set_bool("u_has_metal_rough_map", metal_rough);
+        p.set_bool("u_has_occlusion_map", occlusion);
+        p.set_bool("u_has_emissive_map", emissive);
+        if metal_rough {
+            p.set_vec3("u_base_color", d.pbr.base);
+            p.set_vec2(
+                "u_metal_rough",
+                glam::Vec2::new(d.pbr.metallic, d.pbr.roughness),
+            );
+        }
+        p.set_f32("u_occlusion_strength", d.pbr.occlusion_strength);
+        p.set_vec3("u_emissive", d.pbr.emissive);
+    }
+
     /// Unbind what `bind_textures` bound; unit 0 is left active.
     pub fn unbind_textures(gl: &glow::Context) {
         unsafe {
             for u in [
+                unit::METAL_ROUGH_MAP,
+                unit::OCCLUSION_MAP,
+                unit::EMISSIVE_MAP,
                 unit::SPECULAR_MAP,
                 unit::LIGHT_MAP,
                 unit::NORMAL_MAP,

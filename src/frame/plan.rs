@@ -216,22 +216,36 @@ fn not_drawn(scene: &Scene) -> Vec<String> {
     v
 }
 
-/// The textures the scene's objects sample, each once, with their sizes.
+/// The textures the scene's objects sample, each once, with their sizes:
+/// every map of their materials, named with what it is.
 fn textures(scene: &Scene) -> Vec<PlanTexture> {
-    let mut seen = Vec::new();
+    let mut seen: Vec<(std::path::PathBuf, &str)> = Vec::new();
     for o in &scene.objects {
-        if let Some(p) = &scene.materials[o.material].diffuse_texture
-            && !seen.contains(p)
-        {
-            seen.push(p.clone());
+        let m = &scene.materials[o.material];
+        let maps = [
+            (&m.diffuse_texture, "diffuse"),
+            (&m.normal_map, "normal map"),
+            (&m.specular_map, "specular map"),
+            (&m.alpha_map, "alpha map"),
+            (&m.pbr.metallic_roughness, "metallic-roughness map"),
+            (&m.pbr.occlusion, "occlusion map"),
+            (&m.pbr.emissive_map, "emissive map"),
+        ];
+        for (p, kind) in maps {
+            if let Some(p) = p
+                && !seen.iter().any(|(q, _)| q == p)
+            {
+                seen.push((p.clone(), kind));
+            }
         }
     }
     seen.iter()
-        .map(|p| {
-            let name = p.file_name().map_or_else(
+        .map(|(p, kind)| {
+            let file = p.file_name().map_or_else(
                 || p.display().to_string(),
                 |n| n.to_string_lossy().into_owned(),
             );
+            let name = format!("{file} ({kind})");
             let size = crate::gl::image_file::dimensions(p).map_err(|e| format!("{e:#}"));
             (name, size)
         })

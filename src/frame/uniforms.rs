@@ -45,6 +45,13 @@ pub mod unit {
     /// FAR_SPECULAR's unit, which only tiled shading's lighting pass reads,
     /// and no geometry pass is a lighting pass of tiled shading.
     pub const SPECULAR_MAP: u32 = 15;
+    /// Geometry passes: glTF's metallic-roughness, occlusion and emissive
+    /// maps (`u_metal_rough_map`, `u_occlusion_map`, `u_emissive_map`;
+    /// src/scene/gltf_material.rs): past the 16 units GL 3.3 promises, as
+    /// GBUFFER_ALPHA is, so they clash with no pass's own units.
+    pub const METAL_ROUGH_MAP: u32 = 18;
+    pub const OCCLUSION_MAP: u32 = 19;
+    pub const EMISSIVE_MAP: u32 = 20;
     /// Lighting passes read the G-buffer (`glsl/common/gbuffer_read.glsl`).
     pub const GBUFFER_NORMAL: u32 = 0;
     pub const GBUFFER_ALBEDO: u32 = 1;

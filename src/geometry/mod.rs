@@ -17,7 +17,9 @@
 //! * `gltf`, `gltf_write`: skinned meshes read from and written to glTF 2.0;
 //! * `gltf_scene`, `gltf_material`, `gltf_buffers`: a whole glTF 2.0 scene
 //!   (nodes, triangle primitives, materials, animations), and its bytes
-//!   and counts checked before anything is read.
+//!   and counts checked before anything is read;
+//! * `gltf_images`: the images inside a glTF file (.glb buffer views,
+//!   data: URIs), read when their texture loads.
 //!
 //! Every public function is re-exported here: use `crate::geometry::cube`,
 //! not the file it lives in.
@@ -37,6 +39,7 @@
 mod gltf;
 mod gltf_buffers;
 mod gltf_build;
+mod gltf_images;
 mod gltf_material;
 mod gltf_nodes;
 mod gltf_scene;
@@ -53,6 +56,7 @@ mod volumes;
 pub use gltf::{MAX_GLTF_BYTES, MAX_GLTF_VERTICES, load_gltf};
 pub use gltf_buffers::{MAX_ACCESSOR_BYTES, SUPPORTED_EXTENSIONS};
 pub use gltf_build::GltfBuilder;
+pub use gltf_images::{gltf_image_bytes, gltf_image_path};
 pub use gltf_material::{AlphaMode, GltfMaterial, GltfTexture};
 pub use gltf_scene::{
     GltfNode, GltfPrimitive, GltfScene, MAX_GLTF_NODES, MAX_GLTF_VALUE, load_gltf_scene,

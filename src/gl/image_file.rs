@@ -83,11 +83,17 @@ pub fn dimensions(path: &Path) -> Result<(u32, u32)> {
 }
 
 /// A reader of the image at `path`: a shipped scene's texture is embedded in
-/// the binary (src/assets.rs), any other is opened.
+/// the binary (src/assets.rs), an image inside a glTF file is read from it,
+/// any other is opened.
 fn reader(path: &Path) -> Result<image::ImageReader<Box<dyn BufReadSeek>>> {
-    let reader: Box<dyn BufReadSeek> = match assets::embedded(path) {
-        Some(f) => Box::new(std::io::Cursor::new(f.contents())),
-        None => Box::new(std::io::BufReader::new(
+    let reader: Box<dyn BufReadSeek> = match (assets::embedded(path), assets::gltf_image(path)) {
+        (Some(f), _) => Box::new(std::io::Cursor::new(f.contents())),
+        // An image inside a glTF file (src/geometry/gltf_images.rs).
+        (None, Some((file, i))) => Box::new(std::io::Cursor::new(
+            crate::geometry::gltf_image_bytes(&file, i)
+                .with_context(|| format!("cannot read texture {}", path.display()))?,
+        )),
+        (None, None) => Box::new(std::io::BufReader::new(
             std::fs::File::open(path)
                 .with_context(|| format!("cannot open texture {}", path.display()))?,
         )),

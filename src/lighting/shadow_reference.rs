@@ -22,8 +22,13 @@
 //! price is that an occluder closer than `epsilon` to the point (at a contact)
 //! is missed, a band far thinner than a pixel in the shadow scenes.
 //!
+//! Alpha-tested casters (a leaf's cut-out) block a ray only where their
+//! texel passes the material's alpha test (shadow_reference/cutouts.rs).
+//!
 //! Also the analytic case of the tests: a sphere's shadow on a plane from a
 //! point light, a conic section, in closed form.
+
+mod cutouts;
 
 use super::bvh::Bvh;
 use super::triangle::Triangle;
@@ -59,19 +64,37 @@ impl LightRay {
 /// Every shadow caster of a scene, in world space, in a BVH.
 pub struct SceneTriangles {
     bvh: Bvh,
+    /// The alpha-tested casters (cutouts.rs).
+    cutouts: cutouts::Cutouts,
     /// World-space self-hit distance (module header).
     pub epsilon: f32,
 }
 
 impl SceneTriangles {
     /// The triangles of every object that casts a shadow: all but those
-    /// whose material is transparent (opacity < 1), each mesh moved to the
-    /// world by its object's model matrix.
+    /// whose material is transparent (opacity < 1) or alpha-tests with no
+    /// texture and fails everywhere, each mesh moved to the world by its
+    /// object's model matrix. An alpha-tested caster blocks a ray only
+    /// where its texel passes the test (cutouts.rs).
     pub fn new(scene: &Scene) -> Result<SceneTriangles> {
         let mut meshes = HashMap::<&MeshSource, _>::new();
         let mut triangles = Vec::new();
+        let mut cutouts = cutouts::Cutouts::default();
+        let mut textures = HashMap::<usize, Option<usize>>::new();
         for o in &scene.objects {
-            if scene.materials[o.material].is_transparent() {
+            let material = &scene.materials[o.material];
+            if material.is_transparent() {
+                continue;
+            }
+            let texture = match textures.get(&o.material) {
+                Some(&t) => t,
+                None => {
+                    let t = cutouts::AlphaTexture::of(material)?.map(|t| cutouts.add_texture(t));
+                    textures.insert(o.material, t);
+                    t
+                }
+            };
+            if texture.is_none() && !cutouts::passes_untextured(material) {
                 continue;
             }
             if !meshes.contains_key(&o.mesh) {
@@ -83,15 +106,26 @@ impl SceneTriangles {
                 .iter()
                 .map(|v| o.model.transform_point3(Vec3::from(v.position)))
                 .collect();
+            let (scale, offset) = (material.texturing.uv_scale, material.texturing.uv_offset);
+            let uv = |i: u32| {
+                let t = m.vertices[i as usize].uv;
+                glam::Vec2::new(t[0] * scale[0] + offset[0], t[1] * scale[1] + offset[1])
+            };
             for t in m.indices.chunks_exact(3) {
-                triangles.push(Triangle {
+                let tri = Triangle {
                     a: world[t[0] as usize],
                     b: world[t[1] as usize],
                     c: world[t[2] as usize],
-                });
+                };
+                if let Some(k) = texture {
+                    cutouts.add_triangle(&tri, k, [uv(t[0]), uv(t[1]), uv(t[2])]);
+                }
+                triangles.push(tri);
             }
         }
-        Ok(SceneTriangles::from_triangles(triangles))
+        let mut s = SceneTriangles::from_triangles(triangles);
+        s.cutouts = cutouts;
+        Ok(s)
     }
 
     /// The same from world-space triangles.
@@ -100,6 +134,7 @@ impl SceneTriangles {
         let size = bvh.bounds().map_or(0.0, |(lo, hi)| (hi - lo).length());
         SceneTriangles {
             bvh,
+            cutouts: cutouts::Cutouts::default(),
             epsilon: (EPSILON_PER_SIZE * size).max(1e-6),
         }
     }
@@ -133,8 +168,9 @@ impl SceneTriangles {
                 None => return false,
             },
         };
-        self.bvh
-            .any_hit(from, dir, eps, t_max, |t| t.distance(from) > eps)
+        self.bvh.any_hit(from, dir, eps, t_max, |t| {
+            t.distance(from) > eps && self.cutouts.blocks(t, from, dir)
+        })
     }
 
     /// Lit or shadowed, per pixel, from light `light` of `scene`: `depth` is

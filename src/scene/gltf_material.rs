@@ -10,6 +10,14 @@
 //! k_s   = F0 / ((eta - 1) / (eta + 1))^2          (1 unless eta was capped)
 //! ```
 //!
+//! With a metallicRoughnessTexture the shader takes the same formulas per
+//! texel, metallic = metallicFactor x B and roughness = roughnessFactor x
+//! G, with baseColor = the factor x the base colour texture
+//! (glsl/common/material.glsl, `material_triple`). normalTexture.scale is
+//! the normal map's scale; occlusionTexture multiplies the ambient term by
+//! 1 + strength (R - 1); emissiveFactor x emissiveTexture is added to the
+//! lit colour.
+//!
 //! gloss's highlight is white: a metal keeps its F0's luminance and loses
 //! its tint (the reader's one warning per file says so). MASK is the alpha
 //! test `alpha >= alphaCutoff` (notes 05), BLEND the transparency pass with
@@ -17,7 +25,7 @@
 //! texture's sampler and KHR_texture_transform become the material's
 //! texturing.
 
-use super::material::Microfacet;
+use super::material::{Microfacet, PbrMaps};
 use super::texturing::{TextureFilter, Texturing, Wrap};
 use super::{AlphaTest, Cull, Material, Winding};
 use crate::geometry::{AlphaMode, GltfMaterial, GltfScene, GltfTexture};
@@ -55,7 +63,12 @@ pub fn material(m: &GltfMaterial, file: &str) -> Material {
         AlphaMode::Mask(_) => (AlphaTest::Never, 0.5),
         _ => (AlphaTest::Always, 0.5),
     };
-    let sampled = m.base_texture.as_ref().or(m.normal_texture.as_ref());
+    let sampled = (m.base_texture.as_ref())
+        .or(m.normal_texture.as_ref())
+        .or(m.metallic_roughness_texture.as_ref())
+        .or(m.occlusion_texture.as_ref())
+        .or(m.emissive_texture.as_ref());
+    let path = |t: &Option<GltfTexture>| t.as_ref().map(|t| t.path.clone());
     Material {
         name: format!("{file}#{}", m.name),
         diffuse: base * (1.0 - m.metallic),
@@ -76,6 +89,17 @@ pub fn material(m: &GltfMaterial, file: &str) -> Material {
         },
         winding: Winding::Ccw,
         texturing: sampled.map_or_else(Texturing::default, texturing),
+        normal_scale: m.normal_scale,
+        pbr: PbrMaps {
+            metallic_roughness: path(&m.metallic_roughness_texture),
+            base,
+            metallic: m.metallic,
+            roughness: m.roughness,
+            occlusion: path(&m.occlusion_texture),
+            occlusion_strength: m.occlusion_strength,
+            emissive: Vec3::from(m.emissive),
+            emissive_map: path(&m.emissive_texture),
+        },
         ..Material::default()
     }
 }
@@ -117,6 +141,12 @@ pub(super) fn materials(scene: &GltfScene, path: &Path) -> Vec<Material> {
         metallic: 1.0,
         roughness: 1.0,
         normal_texture: None,
+        normal_scale: 1.0,
+        metallic_roughness_texture: None,
+        occlusion_texture: None,
+        occlusion_strength: 1.0,
+        emissive: [0.0; 3],
+        emissive_texture: None,
         alpha: AlphaMode::Opaque,
         double_sided: false,
     };

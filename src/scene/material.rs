@@ -138,6 +138,48 @@ pub struct Material {
     /// diffuse texture's alpha (a white texture when there is none), so the
     /// alpha test, the shadow pass's included, reads it.
     pub alpha_map: Option<PathBuf>,
+    /// glTF 2.0's maps beyond the base colour and the normal map
+    /// (src/scene/gltf_material.rs; docs/gltf.md has the formulas).
+    pub pbr: PbrMaps,
+}
+
+/// glTF 2.0's metallic-roughness, occlusion and emissive maps and factors
+/// (the specification's §3.9). Without a metallic-roughness map the
+/// material's `diffuse` and `microfacet` already hold the factors' mapping;
+/// with one the shader takes it per texel (glsl/common/material.glsl).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PbrMaps {
+    /// metallicRoughnessTexture: B multiplies `metallic`, G `roughness`;
+    /// linear data.
+    pub metallic_roughness: Option<PathBuf>,
+    /// baseColorFactor.rgb (linear), metallicFactor and roughnessFactor.
+    pub base: Vec3,
+    pub metallic: f32,
+    pub roughness: f32,
+    /// occlusionTexture (R, linear): the ambient term is multiplied by
+    /// 1 + strength (R - 1).
+    pub occlusion: Option<PathBuf>,
+    pub occlusion_strength: f32,
+    /// Emitted light, linear: emissiveFactor, times emissiveTexture (sRGB)
+    /// where there is one.
+    pub emissive: Vec3,
+    pub emissive_map: Option<PathBuf>,
+}
+
+impl Default for PbrMaps {
+    /// No maps, no emission.
+    fn default() -> Self {
+        PbrMaps {
+            metallic_roughness: None,
+            base: Vec3::ONE,
+            metallic: 1.0,
+            roughness: 1.0,
+            occlusion: None,
+            occlusion_strength: 1.0,
+            emissive: Vec3::ZERO,
+            emissive_map: None,
+        }
+    }
 }
 
 impl Default for Material {
@@ -163,6 +205,7 @@ impl Default for Material {
             specular_map: None,
             normal_scale: 1.0,
             alpha_map: None,
+            pbr: PbrMaps::default(),
         }
     }
 }
@@ -179,6 +222,9 @@ impl Material {
             || self.normal_map.is_some()
             || self.specular_map.is_some()
             || self.alpha_map.is_some()
+            || self.pbr.metallic_roughness.is_some()
+            || self.pbr.occlusion.is_some()
+            || self.pbr.emissive_map.is_some()
     }
 }
 

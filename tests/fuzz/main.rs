@@ -30,6 +30,7 @@
 mod alloc;
 mod cli;
 mod gltf;
+mod gltf_images;
 mod mtl;
 mod obj;
 mod overrides;

@@ -63,7 +63,7 @@ fn seeds() -> &'static [Vec<u8>] {
 }
 
 /// CRC-32 as PNG computes it.
-fn crc32(data: &[u8]) -> u32 {
+pub fn crc32(data: &[u8]) -> u32 {
     let mut crc = 0xFFFF_FFFFu32;
     for &b in data {
         crc ^= u32::from(b);

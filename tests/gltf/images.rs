@@ -15,7 +15,7 @@ use gloss::scene::{RenderPath, Scene};
 
 /// The scene's view-projection and the pixel (column, row from the top)
 /// of world point `p`.
-fn pixel(s: &Scene, p: Vec3) -> (f32, f32) {
+pub(crate) fn pixel(s: &Scene, p: Vec3) -> (f32, f32) {
     let vp = s.camera.projection(s.aspect()) * s.camera.view();
     let c = vp * p.extend(1.0);
     let ndc = c.truncate() / c.w;
@@ -72,7 +72,7 @@ fn the_nested_cube_covers_the_pixels_its_matrices_predict() {
 }
 
 /// A quad facing the camera, x and y in -1..1, uv 0..1 (gloss's: v up).
-fn quad() -> MeshData {
+pub(crate) fn quad() -> MeshData {
     let v = |x: f32, y: f32| Vertex {
         position: [x, y, 0.0],
         normal: [0.0, 0.0, 1.0],

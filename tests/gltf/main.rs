@@ -10,5 +10,7 @@ mod common;
 mod files;
 mod hostile;
 mod images;
+mod maps;
 mod materials;
 mod reader;
+mod samples;

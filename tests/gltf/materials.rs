@@ -75,9 +75,55 @@ fn metallic_roughness_matches_gltfs_brdf_through_the_cpu_microfacet() {
         metallic,
         roughness: 0.5,
         normal_texture: None,
+        normal_scale: 1.0,
+        metallic_roughness_texture: None,
+        occlusion_texture: None,
+        occlusion_strength: 1.0,
+        emissive: [0.0; 3],
+        emissive_texture: None,
         alpha: AlphaMode::Opaque,
         double_sided: false,
     };
     assert_eq!(material(&gm(1.0), "f").diffuse, Vec3::ZERO);
     assert_eq!(material(&gm(0.0), "f").diffuse, Vec3::new(0.8, 0.3, 0.1));
+}
+
+/// What a coloured metal loses (docs/gltf.md, "A metal's tint"): gloss's
+/// highlight is white with F0 = lum(baseColor), glTF's is F0 = baseColor
+/// per channel. Measured through the CPU microfacet against glTF's BRDF
+/// per channel, light from the eye at 0-60°: the ratio is lum / F0_c,
+/// the table's numbers.
+#[test]
+fn a_coloured_metals_tint_is_its_luminance_and_the_error_is_measured() {
+    let n = DVec3::Z;
+    // Metal, base colour, and the relative error per channel the docs give.
+    let metals = [
+        ("gold", Vec3::new(1.0, 0.766, 0.336), [-0.215, 0.024, 1.335]),
+        (
+            "copper",
+            Vec3::new(0.955, 0.638, 0.538),
+            [-0.269, 0.094, 0.298],
+        ),
+        (
+            "silver",
+            Vec3::new(0.972, 0.960, 0.915),
+            [-0.013, -0.001, 0.048],
+        ),
+    ];
+    for (name, base, documented) in metals {
+        let m = microfacet(1.0, 0.5, base);
+        for deg in [0.0f64, 30.0, 60.0] {
+            let t = deg.to_radians();
+            let l = DVec3::new(t.sin(), 0.0, t.cos());
+            let ours = brdf(l, l, n, m.alpha as f64, m.eta as f64, m.k_s as f64);
+            for (c, want) in [base.x, base.y, base.z].into_iter().zip(documented) {
+                let theirs = gltf_specular(l, l, n, c as f64, 0.5);
+                let err = (ours - theirs) / theirs;
+                assert!(
+                    (err - want).abs() < 2e-3,
+                    "{name} at {deg}°, F0 {c}: error {err:.4}, documented {want}"
+                );
+            }
+        }
+    }
 }

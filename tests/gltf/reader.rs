@@ -237,7 +237,7 @@ fn what_gloss_leaves_out_is_one_warning_per_file() {
     let mut b = GltfBuilder::default();
     let mesh = b.mesh(&plane(2.0, 2.0, 1), Some(0));
     b.materials.push(
-        r#"{"name":"glow","emissiveFactor":[1,0,0],"pbrMetallicRoughness":{"metallicFactor":0}}"#
+        r#"{"name":"glow","emissiveFactor":[1,0,0],"pbrMetallicRoughness":{"baseColorFactor":[1,0.8,0.3,1],"metallicFactor":1}}"#
             .into(),
     );
     b.nodes.push(format!(r#"{{"mesh":{mesh}}}"#));
@@ -253,10 +253,12 @@ fn what_gloss_leaves_out_is_one_warning_per_file() {
     for what in [
         "1 cameras",
         "KHR_lights_punctual",
-        "material 'glow': emissive",
+        "material 'glow': the metal's tint",
     ] {
         assert!(w[0].contains(what), "{what} in {}", w[0]);
     }
+    // Emission is drawn, so it is not in the warning.
+    assert!(!w[0].contains("emissive"), "{}", w[0]);
     assert!(w[0].contains("model.gltf"), "{}", w[0]);
 }
 

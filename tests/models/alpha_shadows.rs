@@ -6,10 +6,13 @@
 //! light along (-1, -1, 0)), falls on -1 < x < 0: the cut edge x = 0 lands
 //! at x = -1 for all three lights. A shadow pass without the alpha test
 //! would cast the whole quad, darkening -2 < x < -1 too (-2.5 for the
-//! lights at a point).
+//! lights at a point). The floor is also checked against the ray-traced
+//! shadow reference (src/lighting/shadow_reference/cutouts.rs), which runs
+//! the same alpha test on the CPU.
 
 use crate::common;
 use crate::{linear_at, temp_dir, write};
+use gloss::lighting::shadow_reference::{LightRay, SceneTriangles};
 use gloss::renderer::Output;
 use gloss::scene::{RenderPath, Scene};
 use std::path::Path;
@@ -132,6 +135,7 @@ fn an_alpha_cutoff_splits_the_quad_and_its_shadow_at_the_predicted_column() {
             gloss::scene::AlphaTest::Gequal,
             "an alpha channel is a cut-out"
         );
+        let occluders = SceneTriangles::new(&s).unwrap();
         for path in RenderPath::ALL {
             let mut s = s.clone();
             s.render.path = *path;
@@ -153,6 +157,30 @@ fn an_alpha_cutoff_splits_the_quad_and_its_shadow_at_the_predicted_column() {
                 }
             }
             assert!(wrong.is_empty(), "{name}, {path}:\n{}", wrong.join("\n"));
+            // The same floor against the ray-traced reference, which runs
+            // the leaf's alpha test at each hit (an independent answer to
+            // the hand prediction above).
+            let ray = LightRay::of(&s.lights[0]);
+            for c in 0..96 {
+                let x = (c as f32 + 0.5) / 16.0 - 3.0;
+                let near_edge = [-1.0f32, 0.0, 1.0]
+                    .iter()
+                    .any(|e| (x - e).abs() < 1.5 / 16.0);
+                if near_edge || predicted(x) == Seen::Quad {
+                    continue;
+                }
+                let p = glam::Vec3::new(x, 0.0, -0.22);
+                let want = if occluders.occluded(p, ray) {
+                    Seen::Shadow
+                } else {
+                    Seen::Lit
+                };
+                let got = seen(linear_at(&r, c, 44));
+                assert_eq!(
+                    got, want,
+                    "{name}, {path}: column {c} (x = {x:.2}) against the reference"
+                );
+            }
         }
     }
 }

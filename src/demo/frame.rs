@@ -65,6 +65,13 @@ impl Demo {
         // Pass times are measured (glFinish after each pass) while the panel shows them.
         run.renderer.timing = run.panel.open && run.panel.pass_times;
         run.renderer.render(&camera)?;
+        // The probed pixel read back from this frame (src/demo/probe.rs).
+        if let Some(e) = run.update_probe(&camera) {
+            self.message = Some(e);
+        }
+        let Some(run) = self.running.as_mut() else {
+            return Ok(false);
+        };
 
         // 1. The image: the final frame, or the inspected target.
         let views = all_views(run);
@@ -200,6 +207,7 @@ impl Demo {
             gl_info: &run.gl_info,
             stretch,
             volumes: volume_count(&run.renderer),
+            probe: run.probe.as_ref(),
         };
         let mut actions = Vec::new();
         let panel = &mut run.panel;

@@ -77,6 +77,7 @@ impl Demo {
         let views = all_views(run);
         run.panel.inspect = inspector::follow(run.panel.inspect, &mut run.inspected, &views);
         let view = run.panel.inspect.and_then(|i| views.get(i));
+        let range = view.and_then(|v| inspector::grey_range(run.renderer.targets(), v));
         // A shadow-map view's depths shown as black and white.
         let mut stretch = None;
         let shown = match view {
@@ -208,6 +209,7 @@ impl Demo {
             stretch,
             volumes: volume_count(&run.renderer),
             probe: run.probe.as_ref(),
+            range,
         };
         let mut actions = Vec::new();
         let panel = &mut run.panel;

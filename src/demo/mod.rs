@@ -35,6 +35,7 @@ pub use present::restore_after_egui;
 mod screenshot;
 mod shaders;
 pub mod shadow_views;
+mod stencil_marks;
 mod thumbnails;
 pub mod volume_views;
 

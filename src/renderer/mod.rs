@@ -7,6 +7,7 @@ mod output;
 mod passes;
 mod probe;
 mod probe_shadow;
+mod probe_text;
 mod programs;
 
 use output::target_descs;

@@ -17,7 +17,7 @@
 use super::Renderer;
 use super::probe_shadow::{ShadowProbe, probe_shadows};
 use crate::frame::gbuffer::NORMAL;
-use crate::frame::targets::{Depth, format_name};
+use crate::frame::targets::Depth;
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::texture::bytemuck_f32;
 use crate::scene::{Camera, LightKind};
@@ -225,7 +225,9 @@ impl Renderer {
 /// (`x`, `y`) of a `full`-size frame in a target of `size` (a target at a
 /// fraction of the frame, such as the far field's).
 fn scaled(x: u32, y: u32, full: (u32, u32), size: (u32, u32)) -> (u32, u32) {
-    let s = |v: u32, f: u32, t: u32| ((u64::from(v) * u64::from(t) / u64::from(f.max(1))) as u32).min(t.max(1) - 1);
+    let s = |v: u32, f: u32, t: u32| {
+        ((u64::from(v) * u64::from(t) / u64::from(f.max(1))) as u32).min(t.max(1) - 1)
+    };
     (s(x, full.0, size.0), s(y, full.1, size.1))
 }
 
@@ -370,54 +372,5 @@ impl Rebuild<'_> {
         let to_eye = self.camera.eye - p;
         let n = if n.dot(to_eye) < 0.0 { -n } else { n };
         Some((n, "rebuilt from the depth of the pixels beside it"))
-    }
-}
-
-impl std::fmt::Display for Probe {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        let v3 = |v: Vec3| format!("({:.4}, {:.4}, {:.4})", v.x, v.y, v.z);
-        let (w, h) = self.size;
-        writeln!(
-            f,
-            "pixel ({}, {}) of the {w}x{h} frame (from the top left)",
-            self.x, self.y
-        )?;
-        for t in &self.targets {
-            let v = &t.value[..t.channels];
-            let v: Vec<String> = v.iter().map(|c| format!("{c:.4}")).collect();
-            writeln!(
-                f,
-                "  {} ({}): {}",
-                t.name,
-                format_name(t.format),
-                v.join(", ")
-            )?;
-        }
-        match self.depth {
-            Some(d) if d < 1.0 => writeln!(f, "  depth: {d:.6}")?,
-            Some(_) => writeln!(f, "  depth: 1.0 (nothing drawn here)")?,
-            None => writeln!(f, "  depth: none (this frame has no depth buffer)")?,
-        }
-        if let (Some(v), Some(p)) = (self.view_position, self.world_position) {
-            writeln!(f, "  view-space position: {}", v3(v))?;
-            writeln!(f, "  world position: {}", v3(p))?;
-        }
-        if let Some((n, source)) = self.normal {
-            writeln!(f, "  normal: {} ({source})", v3(n))?;
-        }
-        for (target, s) in &self.stencil {
-            writeln!(f, "  {target}.stencil: {s}")?;
-        }
-        for s in &self.shadows {
-            writeln!(f, "  {s}")?;
-        }
-        if let Some(r) = &self.reached {
-            let list: Vec<String> = r.iter().map(|l| l.to_string()).collect();
-            match list.is_empty() {
-                true => writeln!(f, "  lights reaching it: none")?,
-                false => writeln!(f, "  lights reaching it: {}", list.join(", "))?,
-            }
-        }
-        Ok(())
     }
 }

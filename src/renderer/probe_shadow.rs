@@ -131,7 +131,10 @@ pub fn cube_face(d: Vec3) -> (usize, Vec2) {
         (5, -d.x, -d.y, a.z)
     };
     let ma = ma.max(1e-20);
-    (face, Vec2::new(0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0)))
+    (
+        face,
+        Vec2::new(0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0)),
+    )
 }
 
 /// The texel (column, row from the bottom) that `uv` falls in.

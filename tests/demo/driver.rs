@@ -125,5 +125,6 @@ pub fn input<'a>(scene: &'a Scene, r: &'a Renderer) -> PanelInput<'a> {
         stretch: None,
         volumes: 0,
         probe: None,
+        range: None,
     }
 }

@@ -52,6 +52,7 @@ fn the_panel_is_drawn_and_leaves_the_scene_and_the_gl_state_as_they_were() {
         stretch: None,
         volumes: 0,
         probe: None,
+        range: None,
     };
     let raw = egui::RawInput {
         screen_rect: Some(egui::Rect::from_min_size(

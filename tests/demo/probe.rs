@@ -113,7 +113,10 @@ fn vec_after(text: &str, label: &str) -> Vec3 {
         .find(|l| l.trim_start().starts_with(label))
         .unwrap_or_else(|| panic!("no {label:?} in\n{text}"));
     let inner = &line[line.find('(').unwrap() + 1..line.find(')').unwrap()];
-    let v: Vec<f32> = inner.split(',').map(|s| s.trim().parse().unwrap()).collect();
+    let v: Vec<f32> = inner
+        .split(',')
+        .map(|s| s.trim().parse().unwrap())
+        .collect();
     Vec3::new(v[0], v[1], v[2])
 }
 
@@ -196,8 +199,5 @@ fn a_pixel_outside_the_frame_is_refused_with_the_frame_size() {
         .unwrap();
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.contains("(960, 0)") && err.contains("960x540"),
-        "{err}"
-    );
+    assert!(err.contains("(960, 0)") && err.contains("960x540"), "{err}");
 }

@@ -9,6 +9,7 @@
 //! appears here through its one registration.
 
 mod animation;
+mod fields;
 mod geometry;
 mod head;
 mod help;
@@ -110,6 +111,8 @@ pub struct PanelInput<'a> {
     pub volumes: usize,
     /// What the probed pixel holds (src/renderer/probe.rs).
     pub probe: Option<&'a crate::renderer::Probe>,
+    /// A one-channel view's least and greatest value, read back.
+    pub range: Option<(f32, f32)>,
 }
 
 /// What the panel remembers between frames.

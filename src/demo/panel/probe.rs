@@ -22,11 +22,9 @@ impl PanelState {
                 let side = (2 * MAGNIFIER_RADIUS + 1) as usize;
                 let rgba: Vec<u8> = p.magnifier.iter().flatten().copied().collect();
                 let image = egui::ColorImage::from_rgba_unmultiplied([side, side], &rgba);
-                let texture = ui.ctx().load_texture(
-                    "probe-magnifier",
-                    image,
-                    egui::TextureOptions::NEAREST,
-                );
+                let texture =
+                    ui.ctx()
+                        .load_texture("probe-magnifier", image, egui::TextureOptions::NEAREST);
                 let size = egui::vec2(CELL * side as f32, CELL * side as f32);
                 let r = ui.add(egui::Image::from_texture(&texture).fit_to_exact_size(size));
                 // The probed pixel, outlined in the middle.

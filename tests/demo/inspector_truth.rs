@@ -59,7 +59,10 @@ fn the_ambient_occlusion_target_is_shown_in_grey_at_its_values() {
     let range = gloss::demo::inspector::grey_range(r.targets(), ao);
     assert_eq!(range, Some((least, greatest)));
     let normal = (all.iter()).find(|v| v.mode == Mode::Normal).unwrap();
-    assert_eq!(gloss::demo::inspector::grey_range(r.targets(), normal), None);
+    assert_eq!(
+        gloss::demo::inspector::grey_range(r.targets(), normal),
+        None
+    );
 }
 
 #[test]

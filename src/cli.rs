@@ -112,6 +112,26 @@ pub enum Command {
         #[arg(long)]
         dot: Option<PathBuf>,
     },
+    /// Print what one pixel of the frame holds: every render target's value
+    /// there, its depth and the view-space and world position it rebuilds,
+    /// its stencil, each casting light's shadow-map lookup (coordinate,
+    /// stored and compared depth, lit or in shadow), and on the light-volume
+    /// and tiled paths the lights that reach it (docs/demo.md, "Pixel
+    /// probe"). X and Y are pixel coordinates in the rendered image, (0, 0)
+    /// the top-left pixel, y growing downwards.
+    Probe {
+        scene: PathBuf,
+        /// Column, 0 at the left.
+        x: u32,
+        /// Row, 0 at the top.
+        y: u32,
+        /// WIDTHxHEIGHT (default: the scene's render.size)
+        #[arg(long, value_parser = crate::bench::parse_size)]
+        size: Option<(u32, u32)>,
+        /// Override the scene's render path.
+        #[arg(long, value_enum)]
+        path: Option<RenderPath>,
+    },
     /// List the scenes shipped inside gloss (usable from any directory by name).
     Scenes,
     /// Measure speed against error for render paths, light counts and cutoffs.

@@ -257,6 +257,23 @@ fn run(mut cli: Cli) -> Result<()> {
             );
             Ok(())
         }
+        Some(Command::Probe {
+            scene,
+            x,
+            y,
+            size,
+            path,
+        }) => {
+            let mut s = load_scene(&scene, &cli.set, path, None)?;
+            if let Some(sz) = size {
+                s.render.size = sz;
+            }
+            let ctx = Headless::new(headless_backend(cli.backend)?, cli.debug)?;
+            let r = gloss::renderer::render_scene(&ctx, &s, gloss::renderer::Output::Srgb8)?;
+            print!("{}", r.probe(&s.camera, x, y)?);
+            ctx.debug.check(&ctx.gl, "the probe's read-back")?;
+            Ok(())
+        }
         Some(Command::Scenes) => {
             for s in assets::shipped_scenes() {
                 println!("{s}");

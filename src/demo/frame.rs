@@ -65,11 +65,19 @@ impl Demo {
         // Pass times are measured (glFinish after each pass) while the panel shows them.
         run.renderer.timing = run.panel.open && run.panel.pass_times;
         run.renderer.render(&camera)?;
+        // The probed pixel read back from this frame (src/demo/probe.rs).
+        if let Some(e) = run.update_probe(&camera) {
+            self.message = Some(e);
+        }
+        let Some(run) = self.running.as_mut() else {
+            return Ok(false);
+        };
 
         // 1. The image: the final frame, or the inspected target.
         let views = all_views(run);
         run.panel.inspect = inspector::follow(run.panel.inspect, &mut run.inspected, &views);
         let view = run.panel.inspect.and_then(|i| views.get(i));
+        let range = view.and_then(|v| inspector::grey_range(run.renderer.targets(), v));
         // A shadow-map view's depths shown as black and white.
         let mut stretch = None;
         let shown = match view {
@@ -200,6 +208,8 @@ impl Demo {
             gl_info: &run.gl_info,
             stretch,
             volumes: volume_count(&run.renderer),
+            probe: run.probe.as_ref(),
+            range,
         };
         let mut actions = Vec::new();
         let panel = &mut run.panel;

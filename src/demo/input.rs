@@ -51,7 +51,10 @@ impl Demo {
             run.egui.egui_ctx.memory_mut(|m| m.stop_text_input());
             run.panel_layer.stale = true;
             match button {
-                MouseButton::Left => run.left_down = true,
+                MouseButton::Left => {
+                    run.left_down = true;
+                    run.pressed();
+                }
                 MouseButton::Right | MouseButton::Middle => run.pan_down = true,
                 _ => {}
             }
@@ -62,6 +65,9 @@ impl Demo {
             ..
         } = event
         {
+            if run.left_down {
+                run.released();
+            }
             run.left_down = false;
             run.pan_down = false;
         }
@@ -137,7 +143,7 @@ impl Demo {
 impl Running {
     /// Is the pointer at `cursor` over the 3D view (not over the panel, nor
     /// over one of egui's windows or menus laid over the view)?
-    fn in_view(&self, cursor: Option<PhysicalPosition<f64>>) -> bool {
+    pub(super) fn in_view(&self, cursor: Option<PhysicalPosition<f64>>) -> bool {
         let Some(c) = cursor else {
             return false;
         };

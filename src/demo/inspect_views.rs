@@ -7,11 +7,33 @@
 //! them (src/demo/post_chain.rs). src/demo/inspector.rs draws them.
 
 use super::shadow_views::ShadowView;
-use super::volume_views::VolumeView;
 use crate::frame::plan::FramePlan;
 use crate::frame::post::HDR;
 use crate::frame::targets::{Depth, OUTPUT, format_name};
 use crate::gl::depth_map;
+
+/// A view of the light volumes (src/demo/volume_views.rs draws them).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VolumeView {
+    Wireframe,
+    Debug,
+    Overdraw,
+    /// The stencil light volumes' marks, every light's counted (stencil_marks.rs).
+    Marks,
+}
+
+impl VolumeView {
+    pub fn label(self) -> &'static str {
+        match self {
+            VolumeView::Wireframe => "light volumes: wireframe in each light's colour",
+            VolumeView::Debug => "light volumes: solid red over the albedo (notes 04 debug view)",
+            VolumeView::Overdraw => "light volumes: how many cover each pixel (heat map)",
+            VolumeView::Marks => {
+                "stencil light volumes: step 1's marks of every light, counted (notes 05): the volumes each surface lies inside"
+            }
+        }
+    }
+}
 
 /// How an attachment is made visible (glsl/demo/inspect.frag's u_mode).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -243,11 +265,20 @@ pub fn views(plan: &FramePlan, has_volumes: bool, shadows: &[ShadowView]) -> Vec
         }
     }
     if has_volumes {
+        // The stencil marks only where the stencil light volumes run.
+        let stencil_volumes = (plan.passes.iter()).any(|p| {
+            let name = crate::techniques::ALL.get(p.technique).map(|t| t.name);
+            name == Some("stencil_light_volumes")
+        });
+        let marks = stencil_volumes.then_some(VolumeView::Marks);
         for which in [
             VolumeView::Wireframe,
             VolumeView::Debug,
             VolumeView::Overdraw,
-        ] {
+        ]
+        .into_iter()
+        .chain(marks)
+        {
             v.push(View {
                 volumes: Some(which),
                 ..View::of(

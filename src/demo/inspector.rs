@@ -198,3 +198,25 @@ impl Drop for Inspector {
         unsafe { self.gl.delete_sampler(self.levels) };
     }
 }
+
+/// The least and greatest value of a one-channel view's channel (R) over
+/// the whole attachment, read back (glReadPixels on its colour attachment):
+/// the grey picture maps 0 to black and 1 to white, the range says what the
+/// target really holds. None for other views.
+pub fn grey_range(targets: &Targets, view: &View) -> Option<(f32, f32)> {
+    let plain = view.volumes.is_none() && view.shadow.is_none() && !view.stencil;
+    if view.mode != Mode::Grey || !plain || view.level > 0 {
+        return None;
+    }
+    let fb = targets.find(view.target)?;
+    let index = view.color_index?;
+    if fb.colors.get(index).is_none_or(|t| t.samples > 1) {
+        return None;
+    }
+    let data = fb.read_rgba_f32(index as u32);
+    let red = data.iter().step_by(4).copied().filter(|v| v.is_finite());
+    red.fold(None, |r, v| match r {
+        None => Some((v, v)),
+        Some((lo, hi)) => Some((f32::min(lo, v), f32::max(hi, v))),
+    })
+}

@@ -25,6 +25,10 @@ pub const KEYS: &[(&str, &str)] = &[
         "F",
         "fly mode on or off: drag turns the view, W A S D move, Q E down and up",
     ),
+    (
+        "left click (in the view)",
+        "probe that pixel (the panel's \"Pixel probe\")",
+    ),
     ("left drag, wheel", "orbit, zoom"),
     ("right or middle drag", "pan"),
     ("Esc", "quit"),

@@ -28,12 +28,14 @@ mod panel_layer;
 pub mod pictures;
 pub mod post_chain;
 mod present;
+mod probe;
 
 pub use frame::frame_views;
 pub use present::restore_after_egui;
 mod screenshot;
 mod shaders;
 pub mod shadow_views;
+mod stencil_marks;
 mod thumbnails;
 pub mod volume_views;
 
@@ -158,6 +160,13 @@ struct Running {
     /// The fly-mode keys held down.
     held: std::collections::HashSet<char>,
     cursor: Option<PhysicalPosition<f64>>,
+    /// Where the left button went down in the view (a click or a drag).
+    pressed_at: Option<PhysicalPosition<f64>>,
+    /// The probed pixel of the frame (from the top left), what the probe
+    /// read there this frame, and whether to print it (after a click).
+    probe_at: Option<(u32, u32)>,
+    probe: Option<crate::renderer::Probe>,
+    probe_log: bool,
     /// The 3D view's rectangle in the window (x, y from the top left,
     /// width, height, in pixels): beside the panel, or the whole window.
     view: [i32; 4],
@@ -245,6 +254,10 @@ impl Demo {
             fly: false,
             held: Default::default(),
             cursor: None,
+            pressed_at: None,
+            probe_at: None,
+            probe: None,
+            probe_log: false,
             view: [0, 0, to_i32(w), to_i32(h)],
             title: TitleClock::new(),
             last_swap: Instant::now(),

@@ -15,27 +15,14 @@ use anyhow::Result;
 use glam::{Mat4, Vec4};
 use glow::HasContext;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum VolumeView {
-    Wireframe,
-    Debug,
-    Overdraw,
-}
-
-impl VolumeView {
-    pub fn label(self) -> &'static str {
-        match self {
-            VolumeView::Wireframe => "light volumes: wireframe in each light's colour",
-            VolumeView::Debug => "light volumes: solid red over the albedo (notes 04 debug view)",
-            VolumeView::Overdraw => "light volumes: how many cover each pixel (heat map)",
-        }
-    }
-}
+pub use super::inspect_views::VolumeView;
 
 pub struct VolumeViews {
     program: Program,
     /// The overdraw count (RGBA16F), the renderer's size.
     count: Option<Framebuffer>,
+    /// The stencil light volumes' marks (stencil_marks.rs).
+    pub(super) mark_fb: Option<Framebuffer>,
 }
 
 impl VolumeViews {
@@ -51,6 +38,7 @@ impl VolumeViews {
                 &[],
             )?,
             count: None,
+            mark_fb: None,
         })
     }
 
@@ -167,13 +155,36 @@ impl VolumeViews {
                     into,
                 );
             }
+            VolumeView::Marks => {
+                let (w, h) = (renderer.width as u32, renderer.height as u32);
+                let values =
+                    (self.marks(gl, renderer, vp)?).unwrap_or_else(|| vec![0; (w * h) as usize]);
+                let img = crate::renderer::stencil_image(&values, w, h);
+                let img = image::imageops::flip_vertical(&img);
+                let texture = crate::gl::texture::Texture::from_rgba8(
+                    gl,
+                    w,
+                    h,
+                    img.as_raw(),
+                    false,
+                    crate::gl::texture::Sampling::NEAREST_CLAMP,
+                )?;
+                inspector.draw_texture(
+                    gl,
+                    Some(texture.id),
+                    Mode::Color { encode: false },
+                    camera,
+                    1.0,
+                    into,
+                );
+            }
         }
         Ok(())
     }
 
     /// Draw each bounded light's volume in `color(light)` into the bound
     /// framebuffer; returns how many were drawn.
-    fn volumes(
+    pub(super) fn volumes(
         &self,
         gl: &glow::Context,
         renderer: &Renderer,

@@ -5,10 +5,15 @@
 
 mod output;
 mod passes;
+mod probe;
+mod probe_shadow;
+mod probe_text;
 mod programs;
 
 use output::target_descs;
 pub use output::{Output, stencil_color, stencil_image};
+pub use probe::{MAGNIFIER_RADIUS, Probe, TargetValue};
+pub use probe_shadow::{FACES, ShadowProbe};
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_lights_fit, max_lights};

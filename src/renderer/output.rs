@@ -86,7 +86,7 @@ impl Renderer {
 
     /// Where the frame's depth is: the world image's depth buffer, else
     /// the G-buffer's; None when neither exists (a frame with nothing).
-    fn depth_source(&self) -> Option<&crate::gl::framebuffer::Framebuffer> {
+    pub(super) fn depth_source(&self) -> Option<&crate::gl::framebuffer::Framebuffer> {
         let has = |fb: &crate::gl::framebuffer::Framebuffer| {
             fb.depth_stencil.is_some() || fb.shared_depth.is_some()
         };

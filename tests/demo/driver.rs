@@ -124,5 +124,7 @@ pub fn input<'a>(scene: &'a Scene, r: &'a Renderer) -> PanelInput<'a> {
         size: (r.width, r.height),
         stretch: None,
         volumes: 0,
+        probe: None,
+        range: None,
     }
 }

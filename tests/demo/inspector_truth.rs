@@ -51,6 +51,18 @@ fn the_ambient_occlusion_target_is_shown_in_grey_at_its_values() {
         spread.1 - spread.0 > 0.2,
         "the AO varies over the frame: {spread:?}"
     );
+    // The label's range: the least and greatest stored value (R), and no
+    // range for a view that is not one channel.
+    let red = stored.chunks(4).map(|p| p[0]);
+    let least = red.clone().fold(f32::MAX, f32::min);
+    let greatest = red.fold(f32::MIN, f32::max);
+    let range = gloss::demo::inspector::grey_range(r.targets(), ao);
+    assert_eq!(range, Some((least, greatest)));
+    let normal = (all.iter()).find(|v| v.mode == Mode::Normal).unwrap();
+    assert_eq!(
+        gloss::demo::inspector::grey_range(r.targets(), normal),
+        None
+    );
 }
 
 #[test]

@@ -13,6 +13,7 @@ mod panel;
 mod pass_names;
 mod pictures;
 mod post_chain;
+mod probe;
 mod robustness;
 mod save;
 mod settings;

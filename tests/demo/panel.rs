@@ -51,6 +51,8 @@ fn the_panel_is_drawn_and_leaves_the_scene_and_the_gl_state_as_they_were() {
         size: (w as i32, h as i32),
         stretch: None,
         volumes: 0,
+        probe: None,
+        range: None,
     };
     let raw = egui::RawInput {
         screen_rect: Some(egui::Rect::from_min_size(

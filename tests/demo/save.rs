@@ -320,8 +320,12 @@ fn shadow_knobs_survive_save_as() {
         ShadowFit::Scene,
         CubeRender::SixPasses,
     ));
+    // The default scene: its spot light (2) casts, its sun (3) does not;
+    // the sun turned on, the spot off.
     let mut on = common::scene("default.toml");
-    assert!(on.lights.iter().all(|l| l.shadow.is_none()));
+    let casting: Vec<bool> = on.lights.iter().map(|l| l.shadow.is_some()).collect();
+    assert_eq!(casting, [false, false, true, false]);
+    on.lights[2].shadow = None;
     on.lights[3].shadow = Some(knobs(
         128,
         Pcf::Box5,

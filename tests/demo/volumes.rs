@@ -60,3 +60,60 @@ fn overdraw_counts_the_volumes_over_each_pixel() {
         );
     }
 }
+
+/// The stencil light volumes' marks (src/demo/stencil_marks.rs): each
+/// surface's stencil is the number of light volumes it lies inside, the
+/// CPU's count from the rebuilt world point and each light's radius (and a
+/// spot light's cone) on all but the pixels at the volumes' edges (their
+/// meshes are polygons around the spheres and cones).
+#[test]
+fn the_stencil_marks_count_the_volumes_each_surface_lies_inside() {
+    let ctx = common::context(common::backend());
+    let gl = &ctx.gl;
+    let scene = common::scene("stencil-volumes.toml");
+    let (w, h) = (192, 108);
+    let mut r = Renderer::new(gl, &ctx.debug, &scene, &Sources::Embedded, w, h).unwrap();
+    r.render(&scene.camera).unwrap();
+    let mut views = VolumeViews::new(gl, &Sources::Embedded).unwrap();
+    let u = r.frame_uniforms(&scene.camera, &gloss::frame::views::View::camera());
+    let marks = views.marks(gl, &r, u.view_projection).unwrap().unwrap();
+    ctx.debug.check(gl, "the stencil marks").unwrap();
+    let depth = r.read_depth();
+    let (mut drawn, mut agree, mut marked) = (0, 0, 0);
+    for y in 0..h as usize {
+        for x in 0..w as usize {
+            let d = depth[(h as usize - 1 - y) * w as usize + x];
+            if d >= 1.0 {
+                continue;
+            }
+            let ndc = glam::Vec3::new(
+                2.0 * (x as f32 + 0.5) / w as f32 - 1.0,
+                1.0 - 2.0 * (y as f32 + 0.5) / h as f32,
+                2.0 * d - 1.0,
+            );
+            let p = u.inverse_view_projection.project_point3(ndc);
+            let inside = (scene.lights.iter().zip(&r.lights().lights))
+                .filter(|(l, f)| {
+                    let Some(radius) = f.radius else { return false };
+                    let v = p - l.position;
+                    let cone = l.kind != LightKind::Spot
+                        || v.normalize().dot(l.direction.normalize())
+                            >= l.outer_angle.to_radians().cos();
+                    v.length() <= radius && cone
+                })
+                .count();
+            let m = usize::from(marks[y * w as usize + x]);
+            drawn += 1;
+            agree += usize::from(m == inside);
+            marked += usize::from(m > 0);
+        }
+    }
+    assert!(
+        marked > drawn / 10,
+        "{marked} of {drawn} surface pixels marked"
+    );
+    assert!(
+        agree as f64 >= 0.9 * drawn as f64,
+        "the marks equal the CPU's count on {agree} of {drawn} pixels"
+    );
+}

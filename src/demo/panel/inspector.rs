@@ -20,9 +20,14 @@ impl PanelState {
                     None => "output: the final image".to_string(),
                     Some(i) => input.views.get(i).map(View::label).unwrap_or_default(),
                 };
+                // The shown view's label with its values' range, read back.
+                let selected = match input.range {
+                    Some((lo, hi)) => format!("{}; values {lo:.4} to {hi:.4}", label(current)),
+                    None => label(current),
+                };
                 egui::ComboBox::from_id_salt("inspector")
                     .width(300.0)
-                    .selected_text(label(current))
+                    .selected_text(selected)
                     .show_ui(ui, |ui| {
                         for i in std::iter::once(None).chain((0..input.views.len()).map(Some)) {
                             if ui.selectable_label(current == i, label(i)).clicked() {

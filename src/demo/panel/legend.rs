@@ -21,7 +21,7 @@ pub fn heat(t: f32) -> [f32; 3] {
 
 /// The legend of `view`, if its colours are not the values themselves.
 pub(super) fn show(ui: &mut egui::Ui, view: &View, input: &PanelInput) {
-    if view.stencil {
+    if view.stencil || view.volumes == Some(VolumeView::Marks) {
         ui.small("stencil values:");
         ui.horizontal_wrapped(|ui| {
             for v in 0..=8u8 {
@@ -63,6 +63,9 @@ pub(super) fn show(ui: &mut egui::Ui, view: &View, input: &PanelInput) {
         }
         ui.small(high);
     });
+    if let (true, Some((lo, hi))) = (grey, input.range) {
+        ui.small(format!("read back: least {lo:.4}, greatest {hi:.4}"));
+    }
 }
 
 fn swatch(ui: &mut egui::Ui, colour: egui::Color32) {

@@ -9,6 +9,7 @@
 //! appears here through its one registration.
 
 mod animation;
+mod fields;
 mod geometry;
 mod head;
 mod help;
@@ -17,6 +18,7 @@ mod knob;
 mod legend;
 mod post_chain;
 mod post_params;
+mod probe;
 mod shadow_knobs;
 mod structure;
 mod timings;
@@ -107,6 +109,10 @@ pub struct PanelInput<'a> {
     pub stretch: Option<(f32, f32)>,
     /// How many lights have a volume (the overdraw view's hottest count).
     pub volumes: usize,
+    /// What the probed pixel holds (src/renderer/probe.rs).
+    pub probe: Option<&'a crate::renderer::Probe>,
+    /// A one-channel view's least and greatest value, read back.
+    pub range: Option<(f32, f32)>,
 }
 
 /// What the panel remembers between frames.
@@ -136,6 +142,10 @@ pub struct PanelState {
     /// overlay, the help window. egui's own used rectangle is the pass
     /// before's.
     pub drawn: egui::Rect,
+    /// Probe the pixel under the pointer every frame, not only on a click.
+    pub probe_follow: bool,
+    /// The probe's magnifier, kept until the panel is drawn again.
+    magnifier: Option<egui::TextureHandle>,
     path_text: String,
     save_text: String,
 }
@@ -160,6 +170,8 @@ impl PanelState {
                 egui::pos2(f32::from(PANEL_WIDTH), 0.0),
                 egui::pos2(f32::INFINITY, f32::INFINITY),
             )),
+            probe_follow: false,
+            magnifier: None,
             path_text: scene_path.to_string(),
             save_text: "edited.toml".into(),
         }
@@ -189,6 +201,7 @@ impl PanelState {
                 // Wide content (the plan, long names) scrolls sideways
                 // rather than widening the panel.
                 egui::ScrollArea::both().show(ui, |ui| {
+                    self.probe_section(ui, input);
                     self.scene_section(ui, input, &mut actions);
                     self.animation_section(ui, input, &mut actions);
                     self.geometry_section(ui, input, &mut actions);

@@ -10,6 +10,7 @@
 //!
 //! Bloom's and FXAA's widgets are in src/demo/panel/post_params.rs.
 
+use super::post_params::combo;
 use super::{Action, PanelInput};
 use crate::demo::post_chain::{REFUSED, with_added};
 use crate::frame::post::steps_of;
@@ -216,32 +217,6 @@ fn kernel(ui: &mut egui::Ui, i: usize, k: &mut Kernel3) -> bool {
             }
             ui.end_row();
         }
-    });
-    changed
-}
-
-/// A choice among `all`, each shown by `name`.
-pub(super) fn combo<T: Copy + PartialEq, const N: usize>(
-    ui: &mut egui::Ui,
-    id: (&str, usize),
-    label: &str,
-    v: &mut T,
-    all: [T; N],
-    name: fn(T) -> &'static str,
-) -> bool {
-    let mut changed = false;
-    ui.horizontal(|ui| {
-        ui.label(label);
-        egui::ComboBox::from_id_salt(id)
-            .selected_text(name(*v))
-            .show_ui(ui, |ui| {
-                for c in all {
-                    if ui.selectable_value(v, c, name(c)).changed() {
-                        changed = true;
-                        ui.close();
-                    }
-                }
-            });
     });
     changed
 }

@@ -13,7 +13,7 @@ use crate::scene::post::Taps;
 pub fn bloom(ui: &mut egui::Ui, i: usize, b: &mut Bloom) -> bool {
     let mut changed = false;
     let schemes = BloomScheme::ALL;
-    changed |= super::post_chain::combo(
+    changed |= combo(
         ui,
         ("bloom scheme", i),
         "scheme",
@@ -22,8 +22,7 @@ pub fn bloom(ui: &mut egui::Ui, i: usize, b: &mut Bloom) -> bool {
         BloomScheme::name,
     );
     let taps = [Taps::Direct, Taps::Linear];
-    changed |=
-        super::post_chain::combo(ui, ("bloom taps", i), "taps", &mut b.taps, taps, Taps::name);
+    changed |= combo(ui, ("bloom taps", i), "taps", &mut b.taps, taps, Taps::name);
     let cut = egui::Slider::new(&mut b.radius_scale, 0.05..=1.0).text("radius scale (fewer taps)");
     changed |= ui.add(cut).changed();
     egui::Grid::new(("bloom levels", i)).show(ui, |ui| {
@@ -103,4 +102,30 @@ fn named(r: egui::Response, name: &str, value: f64) -> egui::Response {
         ..egui::WidgetInfo::drag_value(true, value)
     });
     r
+}
+
+/// A choice among `all`, each shown by `name`.
+pub(super) fn combo<T: Copy + PartialEq, const N: usize>(
+    ui: &mut egui::Ui,
+    id: (&str, usize),
+    label: &str,
+    v: &mut T,
+    all: [T; N],
+    name: fn(T) -> &'static str,
+) -> bool {
+    let mut changed = false;
+    ui.horizontal(|ui| {
+        ui.label(label);
+        egui::ComboBox::from_id_salt(id)
+            .selected_text(name(*v))
+            .show_ui(ui, |ui| {
+                for c in all {
+                    if ui.selectable_value(v, c, name(c)).changed() {
+                        changed = true;
+                        ui.close();
+                    }
+                }
+            });
+    });
+    changed
 }

@@ -3,7 +3,7 @@
 //! views' rectangles and the billboards. A new mesh, texture or number of
 //! billboards needs a new renderer (src/demo/actions.rs decides).
 
-use super::values::{number, vec3};
+use super::fields::{number, vec3};
 use crate::assets;
 use crate::scene::texturing::{TextureFilter, Wrap};
 use crate::scene::{

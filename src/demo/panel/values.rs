@@ -5,43 +5,11 @@
 //! opacity and texture; each object's transform, mesh, material and
 //! parent; the camera's lens.
 
+use super::fields::{number, vec3};
 use super::{shadow_knobs, structure};
 use crate::scene::material::Microfacet;
 use crate::scene::{Camera, LightGrid, LightKind, Object, Projection, Scene};
 use glam::Vec3;
-
-pub(super) fn vec3(
-    ui: &mut egui::Ui,
-    label: &str,
-    v: &mut Vec3,
-    range: std::ops::RangeInclusive<f32>,
-) -> bool {
-    ui.horizontal(|ui| {
-        ui.label(label);
-        let mut changed = false;
-        for c in [&mut v.x, &mut v.y, &mut v.z] {
-            changed |= ui
-                .add(egui::DragValue::new(c).range(range.clone()).speed(0.01))
-                .changed();
-        }
-        changed
-    })
-    .inner
-}
-
-pub(super) fn number(
-    ui: &mut egui::Ui,
-    label: &str,
-    v: &mut f32,
-    range: std::ops::RangeInclusive<f32>,
-) -> bool {
-    ui.horizontal(|ui| {
-        ui.label(label);
-        ui.add(egui::DragValue::new(v).range(range).speed(0.01))
-            .changed()
-    })
-    .inner
-}
 
 /// The lights listed in the scene file, editable; Some(new lights) when one changed.
 pub fn lights(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::Light>> {

@@ -48,6 +48,10 @@ pub struct DrawItem {
     pub normal_scale: f32,
     /// The material's specular map, if it has one (`Material::specular_map`).
     pub specular_map: Option<usize>,
+    /// The material's height map for parallax mapping, if it has one, and
+    /// the depth of its relief (`Material::height_scale`).
+    pub height_map: Option<usize>,
+    pub height_scale: f32,
     /// The object's baked light map (notes 01 §8.2), if it has one.
     pub light_map: Option<usize>,
     /// How the texture is sampled, and the uv transform (notes 01 §5).
@@ -152,9 +156,11 @@ impl DrawList {
                 .or_else(|| m.diffuse_texture.as_ref().map(|p| load(p, true)))
                 .transpose()?;
             // Data, not colour: normal and specular maps are linear (GL_RGBA8).
-            let [normal_map, specular_map] =
-                [&m.normal_map, &m.specular_map].map(|p| p.as_ref().map(|p| load(p, false)));
+            let [normal_map, specular_map, height_map] =
+                [&m.normal_map, &m.specular_map, &m.height_map]
+                    .map(|p| p.as_ref().map(|p| load(p, false)));
             let (normal_map, specular_map) = (normal_map.transpose()?, specular_map.transpose()?);
+            let height_map = height_map.transpose()?;
             let roughness = match o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
                 None => None,
                 Some(p) => {
@@ -177,6 +183,8 @@ impl DrawList {
                 normal_map,
                 normal_scale: m.normal_scale,
                 specular_map,
+                height_map,
+                height_scale: m.height_scale,
                 light_map: light_maps[object].take().map(|t| {
                     textures.push(t);
                     textures.len() - 1

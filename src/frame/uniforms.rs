@@ -45,6 +45,9 @@ pub mod unit {
     /// FAR_SPECULAR's unit, which only tiled shading's lighting pass reads,
     /// and no geometry pass is a lighting pass of tiled shading.
     pub const SPECULAR_MAP: u32 = 15;
+    /// The parallax pass: the material's height map (`u_height_map`,
+    /// techniques/lighting/parallax_mapping.rs).
+    pub const HEIGHT_MAP: u32 = 3;
     /// Lighting passes read the G-buffer (`glsl/common/gbuffer_read.glsl`).
     pub const GBUFFER_NORMAL: u32 = 0;
     pub const GBUFFER_ALBEDO: u32 = 1;

@@ -12,6 +12,7 @@ use glam::Vec3;
 mod animation;
 mod blending;
 mod lighting;
+mod parallax;
 mod sky;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
@@ -20,6 +21,7 @@ pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
     STENCIL_VOLUMES, TILE_SIZE,
 };
+pub use parallax::{PARALLAX, PARALLAX_LAYERS, PARALLAX_SHADOWS, PARALLAX_UV};
 pub use sky::SKY_FIRST;
 pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
@@ -359,6 +361,10 @@ pub static ALL: &[&Knob] = &[
     &INTERPOLATION,
     &MIP_COLORS,
     &NORMAL_MAPPING,
+    &PARALLAX,
+    &PARALLAX_LAYERS,
+    &PARALLAX_SHADOWS,
+    &PARALLAX_UV,
     &LIGHT_MAPS,
     &SKY_FIRST,
     &POST_CHAIN,

@@ -161,6 +161,11 @@ pub struct Material {
     /// diffuse texture's alpha (a white texture when there is none), so the
     /// alpha test, the shadow pass's included, reads it.
     pub alpha_map: Option<PathBuf>,
+    /// A height map (linear greyscale, white high) for parallax mapping
+    /// (lighting/parallax_mapping.rs), and the depth of its relief in
+    /// texture uv units (black lies `height_scale` below white).
+    pub height_map: Option<PathBuf>,
+    pub height_scale: f32,
 }
 
 impl Default for Material {
@@ -186,6 +191,8 @@ impl Default for Material {
             specular_map: None,
             normal_scale: 1.0,
             alpha_map: None,
+            height_map: None,
+            height_scale: 0.05,
         }
     }
 }
@@ -202,5 +209,6 @@ impl Material {
             || self.normal_map.is_some()
             || self.specular_map.is_some()
             || self.alpha_map.is_some()
+            || self.height_map.is_some()
     }
 }

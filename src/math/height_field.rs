@@ -134,10 +134,9 @@ impl HeightMap {
 mod tests {
     use super::*;
 
-    /// A ramp rising along u: height = u over one texel-free period (2 x 1 map).
+    /// Heights 0 and 1 in a 2 x 1 map: bilinear between the texel centres
+    /// 0.25 and 0.75, a ramp of height 2u - 0.5.
     fn ramp() -> HeightMap {
-        // Heights 0 and 1 in a 2 x 1 map: bilinear between texel centres
-        // 0.25 and 0.75 gives height 2u - 0.5 there.
         HeightMap::from_image_rows(2, 1, &[0.0, 1.0])
     }
 
@@ -169,9 +168,10 @@ mod tests {
     fn a_low_light_is_blocked_by_the_rising_side_only() {
         let m = ramp();
         let hit = m.trace(DVec2::new(0.5, 0.5), DVec3::Z, 0.1);
-        // A light 0.1 above the horizon: its ray rises 1 in depth per uv
-        // (0.1 / 0.1 ... x / z = 10, times the scale 0.1). Toward +u the relief
-        // rises 2 per uv, faster: blocked. Toward -u it falls away: lit.
+        // A light low over the horizon (x / z = 10): its ray moves 10 x 0.1
+        // = 1 uv per unit of depth, so it rises 1 in depth per uv. Toward +u
+        // the relief rises 2 per uv, faster: blocked. Toward -u it falls
+        // away: lit.
         assert!(!m.lit(hit, DVec3::new(1.0, 0.0, 0.1).normalize(), 0.1));
         assert!(m.lit(hit, DVec3::new(-1.0, 0.0, 0.1).normalize(), 0.1));
         // A high light toward +u (x / z = 1: 10 in depth per uv) rises faster

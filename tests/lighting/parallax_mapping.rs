@@ -249,3 +249,57 @@ fn parallax_uv_against_the_ray_traced_height_field() {
     }
     println!("{table}");
 }
+
+fn parse(render: &str, material: &str) -> Result<Scene, String> {
+    let text = format!(
+        "name = \"t\"\n[camera]\neye = [0.0, 2.0, 2.0]\ntarget = [0.0, 0.0, 0.0]\n\
+         [render]\nsize = [32, 32]\n{render}\n[materials.m]\n{material}\n\
+         [[objects]]\nmesh = \"plane\"\nmaterial = \"m\"\n"
+    );
+    Scene::parse(&text, &common::root().join("scenes/t.toml")).map_err(|e| format!("{e:#}"))
+}
+
+#[test]
+fn bad_parallax_keys_are_refused_and_unused_height_maps_named() {
+    let map = "height_map = \"assets/bricks-height.png\"";
+    for (render, material, want) in [
+        (
+            "",
+            &format!("{map}\nheight_scale = 2.0")[..],
+            "materials.m.height_scale",
+        ),
+        (
+            "",
+            "height_map = \"assets/none.png\"",
+            "materials.m.height_map",
+        ),
+        (
+            "parallax_layers = 0",
+            map,
+            "render.parallax_layers: expected 1..=256",
+        ),
+        (
+            "parallax = \"deep\"",
+            map,
+            "expected off, plain, steep or occlusion",
+        ),
+    ] {
+        let e = parse(render, material).expect_err(want);
+        assert!(e.contains(want), "{want}: {e}");
+    }
+    // Parallax runs on the forward path with Phong shading; elsewhere the
+    // scene says the height map does nothing.
+    for render in ["path = \"deferred\"", "shading = \"gouraud\""] {
+        let w = parse(render, map).unwrap().warnings().join("\n");
+        assert!(
+            w.contains("materials.m.height_map has no effect"),
+            "{render}: {w}"
+        );
+    }
+    assert!(parse("", map).unwrap().warnings().is_empty());
+    let w = parse("parallax = \"steep\"", "")
+        .unwrap()
+        .warnings()
+        .join("\n");
+    assert!(w.contains("render.parallax has no effect"), "{w}");
+}

@@ -307,14 +307,15 @@ impl Scene {
         }
         // Parallax mapping (lighting/parallax_mapping.rs) with no height map.
         let relief = self.materials.iter().any(|m| m.height_map.is_some());
-        for key in [
-            "parallax",
-            "parallax_layers",
-            "parallax_shadows",
-            "parallax_uv",
+        let r = &self.render;
+        for (key, set) in [
+            ("parallax", r.parallax != super::Parallax::Occlusion),
+            ("parallax_layers", r.parallax_layers != 32),
+            ("parallax_shadows", !r.parallax_shadows),
+            ("parallax_uv", r.parallax_uv),
         ] {
             let key = format!("render.{key}");
-            if !relief && self.written(&key) {
+            if !relief && set && self.written(&key) {
                 w.push(format!("{key} has no effect: no material has a height_map"));
             }
         }

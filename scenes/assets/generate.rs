@@ -14,6 +14,11 @@
 //! * `bricks-normal.png`: its tangent-space normal map (linear data), baked
 //!   by `gloss::math::bump::bake_normal_map` from the bricks' height field:
 //!   mortar 1.5 texels below the brick faces, with a 3-texel bevel;
+//! * `bricks-height.png`: the bricks' height field as a height map (linear
+//!   greyscale, white on the brick faces, black in the mortar) for parallax
+//!   mapping, and `bricks-parallax-normal.png`, the normal map of that
+//!   relief at the depth `scenes/parallax.toml` gives it
+//!   (`PARALLAX_DEPTH` texture uv units);
 //! * `ripples.png`: 256x256 linear greyscale ripples, 0.55 to 1, that roughen
 //!   a mirror's reflection (a lake's surface);
 //! * `knot.obj`: a (2, 3) torus knot tube, 3072 triangles, with normals and uvs;
@@ -88,6 +93,11 @@ fn main() -> Result<()> {
     )?;
     write_png(&dir.join("bricks.png"), bricks())?;
     write_png(&dir.join("bricks-normal.png"), bricks_normal())?;
+    write_png(&dir.join("bricks-height.png"), bricks_height_map())?;
+    write_png(
+        &dir.join("bricks-parallax-normal.png"),
+        bricks_parallax_normal(),
+    )?;
     write_png(&dir.join("ripples.png"), ripples())?;
     write_rgba_png(&dir.join("tree.png"), tree())?;
     write_rgba_png(&dir.join("grass.png"), grass())?;
@@ -292,6 +302,27 @@ fn bricks_normal() -> image::RgbImage {
     // Heights in uv units: texels / 256; the image row of v is (1 - v) 256.
     let texels = gloss::math::bump::bake_normal_map(256, 256, |u, v| {
         bricks_height(u * 256.0, (1.0 - v) * 256.0) / 256.0
+    });
+    image::RgbImage::from_fn(256, 256, |x, y| image::Rgb(texels[(y * 256 + x) as usize]))
+}
+
+/// The depth of the bricks' relief in texture uv units: the height_scale
+/// of scenes/parallax.toml's brick materials.
+const PARALLAX_DEPTH: f64 = 0.04;
+
+/// `bricks_height` as a height map, 0 (mortar) to 1 (a brick's face).
+fn bricks_height_map() -> image::RgbImage {
+    image::RgbImage::from_fn(256, 256, |x, y| {
+        let h = bricks_height(x as f64 + 0.5, y as f64 + 0.5) / 1.5;
+        let g = (h.clamp(0.0, 1.0) * 255.0).round() as u8;
+        image::Rgb([g, g, g])
+    })
+}
+
+/// The normals of that relief, `PARALLAX_DEPTH` deep.
+fn bricks_parallax_normal() -> image::RgbImage {
+    let texels = gloss::math::bump::bake_normal_map(256, 256, |u, v| {
+        PARALLAX_DEPTH * bricks_height(u * 256.0, (1.0 - v) * 256.0) / 1.5
     });
     image::RgbImage::from_fn(256, 256, |x, y| image::Rgb(texels[(y * 256 + x) as usize]))
 }

@@ -48,10 +48,13 @@ pub struct DrawItem {
     pub normal_scale: f32,
     /// The material's specular map, if it has one (`Material::specular_map`).
     pub specular_map: Option<usize>,
-    /// glTF's metallic-roughness, occlusion and emissive maps, if the
-    /// material has them, and its factors (`Material::pbr`).
+    /// glTF's metallic-roughness, occlusion and emissive maps and their
+    /// factors (`Material::pbr`); the height map of parallax mapping and
+    /// the depth of its relief (`Material::height_scale`).
     pub pbr_maps: [Option<usize>; 3],
     pub pbr: crate::scene::material::PbrMaps,
+    pub height_map: Option<usize>,
+    pub height_scale: f32,
     /// The object's baked light map (notes 01 §8.2), if it has one.
     pub light_map: Option<usize>,
     /// How the texture is sampled, and the uv transform (notes 01 §5).
@@ -155,27 +158,22 @@ impl DrawList {
             let texture = (combined.map(Ok))
                 .or_else(|| m.diffuse_texture.as_ref().map(|p| load(p, true)))
                 .transpose()?;
-            // Data, not colour: normal and specular maps are linear (GL_RGBA8).
-            let [normal_map, specular_map] =
-                [&m.normal_map, &m.specular_map].map(|p| p.as_ref().map(|p| load(p, false)));
-            let (normal_map, specular_map) = (normal_map.transpose()?, specular_map.transpose()?);
-            // glTF's maps: metallic-roughness and occlusion are data, emission colour.
-            let pbr = &m.pbr;
-            let pbr_maps = [
-                (&pbr.metallic_roughness, false),
-                (&pbr.occlusion, false),
-                (&pbr.emissive_map, true),
+            // Data, not colour: normal, specular and height maps and glTF's
+            // metallic-roughness and occlusion are linear (GL_RGBA8); emission is colour.
+            let [normal_map, specular_map, height_map, metal_rough, occlusion, emissive] = [
+                (&m.normal_map, false),
+                (&m.specular_map, false),
+                (&m.height_map, false),
+                (&m.pbr.metallic_roughness, false),
+                (&m.pbr.occlusion, false),
+                (&m.pbr.emissive_map, true),
             ]
             .map(|(p, srgb)| p.as_ref().map(|p| load(p, srgb)).transpose());
-            let [a, b, c] = pbr_maps;
-            let pbr_maps = [a?, b?, c?];
-            let roughness = match o.mirror.as_ref().and_then(|m| m.roughness.as_ref()) {
-                None => None,
-                Some(p) => {
-                    textures.push(Texture::load(gl, p, false, Sampling::TRILINEAR_REPEAT)?);
-                    Some(textures.len() - 1)
-                }
-            };
+            let (normal_map, specular_map, height_map) = (normal_map?, specular_map?, height_map?);
+            let pbr_maps = [metal_rough?, occlusion?, emissive?];
+            let roughness = (o.mirror.as_ref().and_then(|m| m.roughness.as_ref()))
+                .map(|p| load(p, false)) // a rough mirror's roughness map: data
+                .transpose()?;
             items.push(DrawItem {
                 mesh,
                 material: o.material,
@@ -193,6 +191,8 @@ impl DrawList {
                 specular_map,
                 pbr_maps,
                 pbr: m.pbr.clone(),
+                height_map,
+                height_scale: m.height_scale,
                 light_map: light_maps[object].take().map(|t| {
                     textures.push(t);
                     textures.len() - 1

@@ -52,6 +52,9 @@ pub mod unit {
     pub const METAL_ROUGH_MAP: u32 = 18;
     pub const OCCLUSION_MAP: u32 = 19;
     pub const EMISSIVE_MAP: u32 = 20;
+    /// The parallax pass: the material's height map (`u_height_map`,
+    /// techniques/lighting/parallax_mapping.rs).
+    pub const HEIGHT_MAP: u32 = 3;
     /// Lighting passes read the G-buffer (`glsl/common/gbuffer_read.glsl`).
     pub const GBUFFER_NORMAL: u32 = 0;
     pub const GBUFFER_ALBEDO: u32 = 1;

@@ -7,6 +7,7 @@
 //! (notes 01 §8.5): rays to the light through a BVH (`bvh`, `triangle`).
 
 pub mod ambient_occlusion;
+pub mod area_light;
 pub mod attenuation;
 pub mod bvh;
 pub mod microfacet;

@@ -40,6 +40,7 @@ pub mod depth;
 pub mod frustum;
 pub mod gaussian;
 pub mod gbuffer_encoding;
+pub mod height_field;
 pub mod interpolation;
 pub mod keyframes;
 pub(crate) mod lcg;

@@ -50,5 +50,8 @@ pub const DEPTH_SLICES: std::ops::RangeInclusive<u32> = 1..=64;
 /// transparent objects per layer).
 pub const PEEL_LAYERS: std::ops::RangeInclusive<u32> = 1..=64;
 
+/// The layers `render.parallax_layers` takes (steep and occlusion parallax).
+pub const PARALLAX_LAYERS: std::ops::RangeInclusive<u32> = 1..=256;
+
 /// The sample counts `render.msaa` takes.
 pub const MSAA_SAMPLES: [u32; 4] = [1, 2, 4, 8];

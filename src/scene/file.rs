@@ -142,6 +142,11 @@ pub(super) struct RenderFile {
     pub(super) interpolation: super::texturing::Interpolation,
     pub(super) mip_colors: bool,
     pub(super) normal_mapping: bool,
+    /// Parallax mapping of materials with a height_map (lighting/parallax_mapping.rs).
+    pub(super) parallax: super::settings::Parallax,
+    pub(super) parallax_layers: u32,
+    pub(super) parallax_shadows: bool,
+    pub(super) parallax_uv: bool,
     pub(super) light_maps: bool,
     /// Draw the skybox before the opaque world, depth test off (forward only).
     pub(super) sky_first: bool,
@@ -186,6 +191,10 @@ impl Default for RenderFile {
             interpolation: super::texturing::Interpolation::Perspective,
             mip_colors: false,
             normal_mapping: true,
+            parallax: super::settings::Parallax::Occlusion,
+            parallax_layers: 32,
+            parallax_shadows: true,
+            parallax_uv: false,
             light_maps: true,
             sky_first: false,
             gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
@@ -265,6 +274,10 @@ pub(super) struct MaterialFile {
     pub(super) diffuse_texture: Option<String>,
     /// A tangent-space normal map (notes 01 §8.4), loaded as linear data.
     pub(super) normal_map: Option<String>,
+    /// A height map (white high), for parallax mapping; how deep its relief
+    /// is, in texture uv units.
+    pub(super) height_map: Option<String>,
+    pub(super) height_scale: Option<f32>,
     #[serde(default = "spec_default")]
     pub(super) specular: [f32; 3],
     #[serde(default = "shininess_default")]

@@ -13,6 +13,7 @@ mod animation;
 mod blending;
 pub mod keys;
 mod lighting;
+mod parallax;
 mod sky;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
@@ -21,6 +22,7 @@ pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
     STENCIL_VOLUMES, TILE_SIZE,
 };
+pub use parallax::{PARALLAX, PARALLAX_LAYERS, PARALLAX_SHADOWS, PARALLAX_UV};
 pub use sky::SKY_FIRST;
 pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
@@ -360,6 +362,10 @@ pub static ALL: &[&Knob] = &[
     &INTERPOLATION,
     &MIP_COLORS,
     &NORMAL_MAPPING,
+    &PARALLAX,
+    &PARALLAX_LAYERS,
+    &PARALLAX_SHADOWS,
+    &PARALLAX_UV,
     &LIGHT_MAPS,
     &SKY_FIRST,
     &POST_CHAIN,

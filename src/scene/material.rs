@@ -141,6 +141,11 @@ pub struct Material {
     /// glTF 2.0's maps beyond the base colour and the normal map
     /// (src/scene/gltf_material.rs; docs/gltf.md has the formulas).
     pub pbr: PbrMaps,
+    /// A height map (linear greyscale, white high) for parallax mapping
+    /// (lighting/parallax_mapping.rs), and the depth of its relief in
+    /// texture uv units (black lies `height_scale` below white).
+    pub height_map: Option<PathBuf>,
+    pub height_scale: f32,
 }
 
 /// glTF 2.0's metallic-roughness, occlusion and emissive maps and factors
@@ -206,6 +211,8 @@ impl Default for Material {
             normal_scale: 1.0,
             alpha_map: None,
             pbr: PbrMaps::default(),
+            height_map: None,
+            height_scale: 0.05,
         }
     }
 }
@@ -222,6 +229,7 @@ impl Material {
             || self.normal_map.is_some()
             || self.specular_map.is_some()
             || self.alpha_map.is_some()
+            || self.height_map.is_some()
             || self.pbr.metallic_roughness.is_some()
             || self.pbr.occlusion.is_some()
             || self.pbr.emissive_map.is_some()

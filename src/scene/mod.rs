@@ -60,6 +60,7 @@ pub use lights::validate_attenuation;
 pub use material::Material;
 pub use mirrors::{Mirror, flat};
 pub use render_settings::RenderSettings;
+pub use settings::Parallax;
 pub use settings::Transparency;
 pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, Cull, DeferredLights, DepthFunc,

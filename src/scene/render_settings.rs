@@ -12,7 +12,7 @@ use anyhow::{Result, bail};
 use glam::Vec3;
 
 pub use super::checks::{
-    DEPTH_SLICES, FAR_FIELD_SCALES, MAX_MIRROR_DEPTH, MSAA_SAMPLES, PEEL_LAYERS, TILE_SIZES,
+    DEPTH_SLICES, FAR_FIELD_SCALES, MAX_MIRROR_DEPTH, MSAA_SAMPLES, PARALLAX_LAYERS, PEEL_LAYERS, TILE_SIZES,
 };
 
 /// Render settings (the `[render]` table).
@@ -146,6 +146,20 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         interpolation: r.interpolation,
         mip_colors: r.mip_colors,
         normal_mapping: r.normal_mapping,
+        parallax: r.parallax,
+        parallax_layers: {
+            if !PARALLAX_LAYERS.contains(&r.parallax_layers) {
+                bail!(
+                    "render.parallax_layers: expected {}..={} layers, found {}",
+                    PARALLAX_LAYERS.start(),
+                    PARALLAX_LAYERS.end(),
+                    r.parallax_layers
+                );
+            }
+            r.parallax_layers
+        },
+        parallax_shadows: r.parallax_shadows,
+        parallax_uv: r.parallax_uv,
         light_maps: r.light_maps,
         sky_first: r.sky_first,
         ambient_occlusion: super::ambient_occlusion::resolve(f.ambient_occlusion.as_ref())?,
@@ -233,6 +247,13 @@ pub struct RenderSettings {
     pub mip_colors: bool,
     /// Materials with a normal map perturb their normals with it (notes 01 §8.4).
     pub normal_mapping: bool,
+    /// Parallax mapping of materials with a height map (lighting/parallax_mapping.rs):
+    /// the method, the layers a ray is marched through, self-shadowing, and
+    /// the debug view that colours each pixel by the uv its ray hits.
+    pub parallax: super::settings::Parallax,
+    pub parallax_layers: u32,
+    pub parallax_shadows: bool,
+    pub parallax_uv: bool,
     /// Objects with a light map draw it instead of their light loop (notes 01 §8.2).
     pub light_maps: bool,
     /// Draw the skybox first, before the opaque world, with the depth test

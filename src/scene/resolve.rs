@@ -157,6 +157,14 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
         };
         let diffuse_texture = texture("diffuse_texture", &m.diffuse_texture)?;
         let normal_map = texture("normal_map", &m.normal_map)?;
+        let height_map = texture("height_map", &m.height_map)?;
+        let height_scale = m.height_scale.unwrap_or(Material::default().height_scale);
+        if !(height_scale.is_finite() && (0.0..=1.0).contains(&height_scale)) {
+            bail!(
+                "{}: expected a depth in 0..=1 texture uv units, found {height_scale}",
+                key("height_scale")
+            );
+        }
         material_index.insert(n.clone(), materials.len());
         materials.push(Material {
             name: n.clone(),
@@ -174,6 +182,8 @@ fn materials(f: &SceneFile, base: &Path) -> Result<(Vec<Material>, HashMap<Strin
             cull: m.cull.unwrap_or(super::Cull::Back),
             winding: m.winding.unwrap_or(super::Winding::Ccw),
             texturing: super::material::texturing(n, m)?,
+            height_map,
+            height_scale,
             ..Material::default()
         });
     }

@@ -205,7 +205,7 @@ impl Scene {
             .and_then(toml::Value::as_table_mut)
         {
             for (_, m) in materials.iter_mut() {
-                for key in ["diffuse_texture", "normal_map"] {
+                for key in ["diffuse_texture", "normal_map", "height_map"] {
                     if let Some(t) = m.get_mut(key) {
                         fix(t);
                     }

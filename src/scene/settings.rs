@@ -334,6 +334,20 @@ setting! {
 }
 
 setting! {
+    /// Parallax mapping of materials with a height_map (docs/lighting/parallax_mapping.md).
+    pub enum Parallax {
+        /// No offset: the height map is not read (bump mapping alone).
+        Off = "off",
+        /// One offset along the view, by the height at the fragment (LearnOpenGL, Parallax Mapping).
+        Plain = "plain",
+        /// Steep parallax: the view ray marched through `render.parallax_layers` layers.
+        Steep = "steep",
+        /// Parallax occlusion mapping: steep parallax, then the hit interpolated between the last two layers.
+        Occlusion = "occlusion",
+    }
+}
+
+setting! {
     /// How transparent objects are drawn (docs/blending/order_independent_transparency.md).
     pub enum Transparency {
         /// Sorted per object, back to front (notes 01 §6.1): the default.

@@ -303,7 +303,42 @@ impl Scene {
             if !self.objects.iter().any(|o| o.material == index) {
                 w.push(format!("{key} has no effect: no object uses it"));
             }
+            w.extend(self.parallax_warning(&key, m));
         }
+        // Parallax mapping (lighting/parallax_mapping.rs) with no height map.
+        let relief = self.materials.iter().any(|m| m.height_map.is_some());
+        let r = &self.render;
+        for (key, set) in [
+            ("parallax", r.parallax != super::Parallax::Occlusion),
+            ("parallax_layers", r.parallax_layers != 32),
+            ("parallax_shadows", !r.parallax_shadows),
+            ("parallax_uv", r.parallax_uv),
+        ] {
+            let key = format!("render.{key}");
+            if !relief && set && self.written(&key) {
+                w.push(format!("{key} has no effect: no material has a height_map"));
+            }
+        }
+    }
+
+    /// A material with a height map that parallax mapping will not draw.
+    fn parallax_warning(&self, key: &str, m: &super::Material) -> Option<String> {
+        let r = &self.render;
+        m.height_map.as_ref()?;
+        if r.parallax == super::Parallax::Off {
+            return None;
+        }
+        let why = if m.is_transparent() {
+            "the transparency pass draws it (opacity < 1), without parallax".to_string()
+        } else if r.path != RenderPath::Forward || r.shading != super::Shading::Phong {
+            format!(
+                "parallax mapping runs on the forward path with Phong shading; here ({} path, {} shading) it is drawn with its normal map only",
+                r.path, r.shading
+            )
+        } else {
+            return None;
+        };
+        Some(format!("{key}.height_map has no effect: {why}"))
     }
 
     fn camera_warnings(&self, w: &mut Vec<String>) {

@@ -8,4 +8,5 @@ mod bump_mapping;
 mod forward;
 mod gouraud;
 mod microfacet;
+mod parallax_mapping;
 mod static_lighting;

@@ -216,6 +216,11 @@ impl RunPasses for Forward {
             // mirrors by the mirror technique (stencil/mirror.rs).
             for i in f.opaque_order() {
                 let d = &f.draws.items[i];
+                // Height-mapped objects: the parallax pass draws them
+                // (lighting/parallax_mapping.rs).
+                if d.height_map.is_some() && super::parallax_mapping::draws_relief(f.scene) {
+                    continue;
+                }
                 // The material's face culling (notes 01 §3.4): back faces
                 // (the default), front faces, both, or none.
                 match d.cull.gl() {

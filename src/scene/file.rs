@@ -53,6 +53,8 @@ pub(super) struct SceneFile {
     pub(super) tessellation: Option<super::tessellation::TessellationFile>,
     /// A particle fountain (src/scene/particles.rs).
     pub(super) particles: Option<super::particles::ParticlesFile>,
+    /// Outlined objects (src/scene/outlines.rs).
+    pub(super) outlines: Option<super::outlines::OutlinesFile>,
 }
 
 #[derive(Deserialize, Debug)]
@@ -127,6 +129,9 @@ pub(super) struct RenderFile {
     pub(super) msaa: u32,
     pub(super) frustum_culling: bool,
     pub(super) wireframe: bool,
+    /// Draw the `[outlines]` (src/scene/outlines.rs), this many pixels wide.
+    pub(super) outlines: bool,
+    pub(super) outline_width: u32,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
     pub(super) texture_filter: super::texturing::FilterOverride,
@@ -171,6 +176,8 @@ impl Default for RenderFile {
             msaa: 1,
             frustum_culling: true,
             wireframe: false,
+            outlines: true,
+            outline_width: 4,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
             texture_filter: super::texturing::FilterOverride::Material,

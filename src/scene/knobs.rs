@@ -13,6 +13,7 @@ mod animation;
 mod blending;
 mod lighting;
 mod sky;
+mod stencil;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
@@ -21,6 +22,7 @@ pub use lighting::{
     STENCIL_VOLUMES, TILE_SIZE,
 };
 pub use sky::SKY_FIRST;
+pub use stencil::{OUTLINE_WIDTH, OUTLINES};
 pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
 /// What a knob holds.
@@ -355,6 +357,8 @@ pub static ALL: &[&Knob] = &[
     &SPECIALIZE,
     &FRUSTUM_CULLING,
     &WIREFRAME,
+    &OUTLINES,
+    &OUTLINE_WIDTH,
     &TEXTURE_FILTER,
     &INTERPOLATION,
     &MIP_COLORS,

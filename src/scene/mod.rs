@@ -32,6 +32,7 @@ pub mod mirror_views;
 mod mirrors;
 pub mod obj_materials;
 pub mod object_fields;
+pub mod outlines;
 mod overrides;
 pub mod particles;
 pub mod post;
@@ -252,6 +253,9 @@ pub struct Scene {
     /// `[particles]`: a particle fountain, drawn as points a geometry shader
     /// turns into quads.
     pub particles: Option<particles::Particles>,
+    /// `[outlines]`: objects outlined with the stencil buffer
+    /// (src/techniques/stencil/object_outlines.rs).
+    pub outlines: Option<outlines::Outlines>,
     /// `[[clip_planes]]`: world-space planes (n, -n . p), |n| = 1; what lies
     /// on the side n points away from is cut away (gl_ClipDistance[1..]).
     pub clip_planes: Vec<glam::Vec4>,

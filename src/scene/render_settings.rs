@@ -155,6 +155,19 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         frustum_culling: r.frustum_culling,
         wireframe: r.wireframe,
+        outlines: r.outlines,
+        outline_width: {
+            let widths = super::outlines::OUTLINE_WIDTHS;
+            if !widths.contains(&r.outline_width) {
+                bail!(
+                    "render.outline_width: expected {}..={} pixels, found {}",
+                    widths.start(),
+                    widths.end(),
+                    r.outline_width
+                );
+            }
+            r.outline_width
+        },
         skinning_on: r.skinning_on,
         joint_storage: r.joint_storage,
         texture_filter: r.texture_filter,
@@ -235,6 +248,10 @@ pub struct RenderSettings {
     /// The forward and G-buffer passes draw triangles' edges only
     /// (glPolygonMode(GL_FRONT_AND_BACK, GL_LINE)): where the clipper cut them.
     pub wireframe: bool,
+    /// Draw the scene's `[outlines]` (src/techniques/stencil/object_outlines.rs),
+    /// `outline_width` pixels wide.
+    pub outlines: bool,
+    pub outline_width: u32,
     /// Where skinned meshes are skinned: the GPU pass, or the CPU reference.
     pub skinning_on: SkinningOn,
     /// Where the skinning pass reads the joint matrices from.

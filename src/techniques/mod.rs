@@ -55,6 +55,9 @@ pub static ALL: &[&Technique] = &[
     // The sky behind the opaque world, before what blends over it.
     &sky::sun_sky::SUN_SKY,
     &sky::skybox::SKYBOX,
+    // Over the finished opaque world and the sky (the outline is drawn with
+    // the depth test off, over the background too); under the glass.
+    &stencil::object_outlines::OBJECT_OUTLINES,
     &billboards::billboards::BILLBOARDS,
     &vertex_geometry::particles::PARTICLES,
     &blending::transparency::TRANSPARENCY,

@@ -55,6 +55,8 @@ pub(super) struct SceneFile {
     pub(super) particles: Option<super::particles::ParticlesFile>,
     /// Outlined objects (src/scene/outlines.rs).
     pub(super) outlines: Option<super::outlines::OutlinesFile>,
+    /// A field of instanced rocks (src/scene/instancing.rs).
+    pub(super) instancing: Option<super::instancing::InstancingFile>,
 }
 
 #[derive(Deserialize, Debug)]
@@ -132,6 +134,8 @@ pub(super) struct RenderFile {
     /// Draw the `[outlines]` (src/scene/outlines.rs), this many pixels wide.
     pub(super) outlines: bool,
     pub(super) outline_width: u32,
+    /// Draw the `[instancing]` field with one instanced draw (false: one draw per rock).
+    pub(super) instancing: bool,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
     pub(super) texture_filter: super::texturing::FilterOverride,
@@ -178,6 +182,7 @@ impl Default for RenderFile {
             wireframe: false,
             outlines: true,
             outline_width: 4,
+            instancing: true,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
             texture_filter: super::texturing::FilterOverride::Material,

@@ -11,12 +11,14 @@ use glam::Vec3;
 
 mod animation;
 mod blending;
+mod instancing;
 mod lighting;
 mod sky;
 mod stencil;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
+pub use instancing::INSTANCING;
 pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
     STENCIL_VOLUMES, TILE_SIZE,
@@ -359,6 +361,7 @@ pub static ALL: &[&Knob] = &[
     &WIREFRAME,
     &OUTLINES,
     &OUTLINE_WIDTH,
+    &INSTANCING,
     &TEXTURE_FILTER,
     &INTERPOLATION,
     &MIP_COLORS,

@@ -22,6 +22,7 @@ pub mod fxaa;
 pub mod gltf_material;
 pub mod gltf_objects;
 pub mod hierarchy;
+pub mod instancing;
 pub mod knobs;
 mod light_grid;
 mod light_maps;
@@ -256,6 +257,9 @@ pub struct Scene {
     /// `[outlines]`: objects outlined with the stencil buffer
     /// (src/techniques/stencil/object_outlines.rs).
     pub outlines: Option<outlines::Outlines>,
+    /// `[instancing]`: a field of rocks drawn with instanced arrays
+    /// (src/techniques/vertex_geometry/instancing.rs).
+    pub instancing: Option<instancing::Instancing>,
     /// `[[clip_planes]]`: world-space planes (n, -n . p), |n| = 1; what lies
     /// on the side n points away from is cut away (gl_ClipDistance[1..]).
     pub clip_planes: Vec<glam::Vec4>,

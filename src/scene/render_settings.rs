@@ -156,6 +156,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         frustum_culling: r.frustum_culling,
         wireframe: r.wireframe,
         outlines: r.outlines,
+        instancing: r.instancing,
         outline_width: {
             let widths = super::outlines::OUTLINE_WIDTHS;
             if !widths.contains(&r.outline_width) {
@@ -252,6 +253,9 @@ pub struct RenderSettings {
     /// `outline_width` pixels wide.
     pub outlines: bool,
     pub outline_width: u32,
+    /// The `[instancing]` rocks in one glDrawElementsInstanced (true) or
+    /// one glDrawElements per rock (src/techniques/vertex_geometry/instancing.rs).
+    pub instancing: bool,
     /// Where skinned meshes are skinned: the GPU pass, or the CPU reference.
     pub skinning_on: SkinningOn,
     /// Where the skinning pass reads the joint matrices from.

@@ -114,6 +114,7 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
         tessellation: super::tessellation::resolve(f.tessellation.as_ref(), base)?,
         particles: super::particles::resolve(f.particles.as_ref())?,
         outlines,
+        instancing: super::instancing::resolve(f.instancing.as_ref())?,
         clip_planes: super::clip_planes::clip_planes(&f.clip_planes)?,
         sky: super::sky::sky(&f.sky)?,
         skybox: super::skybox::skybox(&f.skybox, f.sky.is_some(), base)?,

@@ -201,6 +201,13 @@ impl Scene {
             width,
             no_outlines,
         );
+        let no_field = "has no effect: the scene has no [instancing] field";
+        warn(
+            "instancing",
+            self.instancing.is_none() && !r.instancing,
+            "false".into(),
+            no_field,
+        );
         let transparent =
             (self.objects.iter()).any(|o| self.materials[o.material].is_transparent());
         warn(

@@ -50,6 +50,9 @@ pub static ALL: &[&Technique] = &[
     // Added to the accumulated light, before the composite reads it.
     &sky::skybox_reflection::SKYBOX_REFLECTION,
     &deferred::composite::COMPOSITE,
+    // Opaque rocks after every path's opaque world (its depth is in the
+    // world target by now), before the mirrors and the sky.
+    &vertex_geometry::instancing::INSTANCING,
     &stencil::mirror::MIRROR,
     &fragment_tests::viewports::VIEWPORTS,
     // The sky behind the opaque world, before what blends over it.

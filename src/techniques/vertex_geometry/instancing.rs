@@ -43,7 +43,8 @@ use crate::scene::{LightKind, Scene, knobs};
 use anyhow::{Result, anyhow};
 use glam::{Mat4, Vec3};
 use glow::HasContext;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
+use std::time::Instant;
 
 pub const INSTANCING: Technique = Technique {
     name: "instancing",
@@ -65,6 +66,17 @@ pub const INSTANCING: Technique = Technique {
 
 /// The first attribute location of the instanced mat4 (four in a row).
 pub const MODEL_LOCATION: u32 = 5;
+
+thread_local! {
+    static LAST_SUBMIT_MS: Cell<f64> = const { Cell::new(0.0) };
+}
+
+/// The CPU time the last instancing pass on this thread took to issue the
+/// rocks' calls (from binding the VAO to the last draw returning, no
+/// glFinish): what `gloss bench --instancing` reports as CPU time.
+pub fn last_submit_ms() -> f64 {
+    LAST_SUBMIT_MS.with(Cell::get)
+}
 
 /// The bytes the CPU sends for the rocks' transforms each frame: none when
 /// instanced (the buffer was filled once), a mat4 uniform per rock otherwise.
@@ -240,6 +252,7 @@ impl RunPasses for InstancingPass {
             p.set_bool("u_output_srgb", u.output_srgb);
             let mesh = &field.rock;
             crate::gl::debug::check_feedback_before_draw(gl);
+            let start = Instant::now();
             gl.bind_vertex_array(Some(mesh.vao));
             if instanced {
                 // 4. Every rock in one call.
@@ -258,6 +271,7 @@ impl RunPasses for InstancingPass {
                 }
             }
             gl.bind_vertex_array(None);
+            LAST_SUBMIT_MS.with(|c| c.set(start.elapsed().as_secs_f64() * 1e3));
 
             gl.use_program(None);
             gl.disable(glow::CLIP_DISTANCE0);

@@ -10,6 +10,7 @@ mod clip_planes;
 mod culling;
 mod face_culling;
 mod feedback;
+mod instancing;
 mod particles;
 mod passes;
 mod plan;

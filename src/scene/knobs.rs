@@ -374,6 +374,13 @@ pub static ALL: &[&Knob] = &[
     &JOINT_STORAGE,
 ];
 
+/// Knobs that switch a technique off: when one is off, its technique adds
+/// no pass and leaves the panel's list with its knobs, so the panel shows
+/// these (for a scene they apply to) among the techniques not in the frame,
+/// to switch them on again.
+pub static SWITCHES: &[(&Knob, fn(&super::Scene) -> bool)] =
+    &[(&OUTLINES, |s| s.outlines.is_some())];
+
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {
     all.iter().position(|&x| x == v).unwrap_or(0)
 }

@@ -9,6 +9,7 @@
 
 mod input;
 mod layout;
+mod switches;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

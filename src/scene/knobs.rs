@@ -374,11 +374,14 @@ pub static ALL: &[&Knob] = &[
     &JOINT_STORAGE,
 ];
 
+/// Whether a switch applies to a scene (it has what the technique draws).
+pub type AppliesTo = fn(&super::Scene) -> bool;
+
 /// Knobs that switch a technique off: when one is off, its technique adds
 /// no pass and leaves the panel's list with its knobs, so the panel shows
 /// these (for a scene they apply to) among the techniques not in the frame,
 /// to switch them on again.
-pub static SWITCHES: &[(&Knob, fn(&super::Scene) -> bool)] =
+pub static SWITCHES: &[(&Knob, AppliesTo)] =
     &[(&OUTLINES, |s| s.outlines.is_some())];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

@@ -136,6 +136,9 @@ pub(super) struct RenderFile {
     pub(super) outline_width: u32,
     /// Draw the `[instancing]` field with one instanced draw (false: one draw per rock).
     pub(super) instancing: bool,
+    /// Draw every opaque object's vertex normals as lines (a geometry shader).
+    pub(super) show_normals: bool,
+    pub(super) normal_length: f32,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
     pub(super) texture_filter: super::texturing::FilterOverride,
@@ -183,6 +186,8 @@ impl Default for RenderFile {
             outlines: true,
             outline_width: 4,
             instancing: true,
+            show_normals: false,
+            normal_length: 0.2,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
             texture_filter: super::texturing::FilterOverride::Material,

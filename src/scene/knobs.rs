@@ -18,7 +18,7 @@ mod stencil;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
-pub use instancing::INSTANCING;
+pub use instancing::{INSTANCING, NORMAL_LENGTH, SHOW_NORMALS};
 pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
     STENCIL_VOLUMES, TILE_SIZE,
@@ -362,6 +362,8 @@ pub static ALL: &[&Knob] = &[
     &OUTLINES,
     &OUTLINE_WIDTH,
     &INSTANCING,
+    &SHOW_NORMALS,
+    &NORMAL_LENGTH,
     &TEXTURE_FILTER,
     &INTERPOLATION,
     &MIP_COLORS,
@@ -382,7 +384,10 @@ pub type AppliesTo = fn(&super::Scene) -> bool;
 /// these (for a scene they apply to) among the techniques not in the frame,
 /// to switch them on again.
 pub static SWITCHES: &[(&Knob, AppliesTo)] =
-    &[(&OUTLINES, |s| s.outlines.is_some())];
+    &[
+        (&OUTLINES, |s| s.outlines.is_some()),
+        (&SHOW_NORMALS, |s| s.opaque_objects() > 0),
+    ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {
     all.iter().position(|&x| x == v).unwrap_or(0)

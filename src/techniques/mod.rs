@@ -61,6 +61,8 @@ pub static ALL: &[&Technique] = &[
     // Over the finished opaque world and the sky (the outline is drawn with
     // the depth test off, over the background too); under the glass.
     &stencil::object_outlines::OBJECT_OUTLINES,
+    // A debug view over the finished opaque world and sky.
+    &vertex_geometry::visualizing_normals::VISUALIZING_NORMALS,
     &billboards::billboards::BILLBOARDS,
     &vertex_geometry::particles::PARTICLES,
     &blending::transparency::TRANSPARENCY,

@@ -7,3 +7,4 @@
 pub mod instancing;
 pub mod particles;
 pub mod tessellation;
+pub mod visualizing_normals;

@@ -17,3 +17,4 @@ mod plan;
 mod skinning;
 mod tessellation;
 mod timing;
+mod visualizing_normals;

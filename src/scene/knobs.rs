@@ -383,11 +383,10 @@ pub type AppliesTo = fn(&super::Scene) -> bool;
 /// no pass and leaves the panel's list with its knobs, so the panel shows
 /// these (for a scene they apply to) among the techniques not in the frame,
 /// to switch them on again.
-pub static SWITCHES: &[(&Knob, AppliesTo)] =
-    &[
-        (&OUTLINES, |s| s.outlines.is_some()),
-        (&SHOW_NORMALS, |s| s.opaque_objects() > 0),
-    ];
+pub static SWITCHES: &[(&Knob, AppliesTo)] = &[
+    (&OUTLINES, |s| s.outlines.is_some()),
+    (&SHOW_NORMALS, |s| s.opaque_objects() > 0),
+];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {
     all.iter().position(|&x| x == v).unwrap_or(0)

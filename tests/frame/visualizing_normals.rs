@@ -9,12 +9,12 @@
 //! scene draws yellow lines only with the switch on.
 
 use crate::common;
+use glam::{Mat3, Mat4, Vec3};
 use gloss::geometry::MeshData;
 use gloss::gl::mesh::Mesh;
 use gloss::gl::program::{Program, Sources};
 use gloss::renderer::Output;
 use gloss::techniques::vertex_geometry::visualizing_normals::STAGES;
-use glam::{Mat3, Mat4, Vec3};
 use glow::HasContext;
 
 /// The line ends the geometry shader emits for `mesh` under `model`, read
@@ -33,14 +33,26 @@ fn captured(ctx: &gloss::gl::Headless, mesh: &MeshData, model: Mat4, length: f32
         gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
         gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, 1, 1);
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-        gl.framebuffer_renderbuffer(glow::FRAMEBUFFER, glow::COLOR_ATTACHMENT0, glow::RENDERBUFFER, Some(rb));
+        gl.framebuffer_renderbuffer(
+            glow::FRAMEBUFFER,
+            glow::COLOR_ATTACHMENT0,
+            glow::RENDERBUFFER,
+            Some(rb),
+        );
         let buffer = gl.create_buffer().unwrap();
         gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, Some(buffer));
-        gl.buffer_data_size(glow::TRANSFORM_FEEDBACK_BUFFER, bytes as i32, glow::STATIC_READ);
+        gl.buffer_data_size(
+            glow::TRANSFORM_FEEDBACK_BUFFER,
+            bytes as i32,
+            glow::STATIC_READ,
+        );
         gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, Some(buffer));
         p.use_program();
         p.set_mat4("u_model", &model);
-        p.set_mat3("u_normal_matrix", &gloss::frame::draw_list::normal_matrix(&model));
+        p.set_mat3(
+            "u_normal_matrix",
+            &gloss::frame::draw_list::normal_matrix(&model),
+        );
         p.set_mat4("u_view_projection", &Mat4::IDENTITY);
         p.set_f32("u_length", length);
         gl.enable(glow::RASTERIZER_DISCARD);
@@ -50,7 +62,11 @@ fn captured(ctx: &gloss::gl::Headless, mesh: &MeshData, model: Mat4, length: f32
         gl.bind_vertex_array(None);
         gl.end_transform_feedback();
         gl.disable(glow::RASTERIZER_DISCARD);
-        assert_eq!(gl.get_error(), glow::NO_ERROR, "the capture raised a GL error");
+        assert_eq!(
+            gl.get_error(),
+            glow::NO_ERROR,
+            "the capture raised a GL error"
+        );
         let mut out = vec![0u8; bytes];
         gl.get_buffer_sub_data(glow::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
         gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, None);
@@ -99,7 +115,10 @@ fn every_drawn_normal_is_the_meshs_normal_at_its_vertex() {
                 p + length * n
             );
         }
-        eprintln!("{name}: {} lines, worst end off by {worst:e}", mesh.indices.len());
+        eprintln!(
+            "{name}: {} lines, worst end off by {worst:e}",
+            mesh.indices.len()
+        );
     }
 }
 

@@ -1,4 +1,4 @@
-//! The panel's switches of object outlines and instancing, clicked as a
+//! The panel's switches of object outlines, instancing and the normals, clicked as a
 //! student clicks them (docs/stencil/object_outlines.md,
 //! docs/vertex_geometry/instancing.md). The checkboxes' places are the
 //! panel's layout for these scenes in a 1280 x 1000 window: the object
@@ -97,4 +97,44 @@ fn the_instancing_checkbox_switches_to_one_draw_per_rock_and_the_same_image() {
     );
     let lit = instanced.pixels().filter(|p| p[0] > 60).count();
     assert!(lit > 5000, "only {lit} lit pixels: no field of rocks");
+}
+
+#[test]
+fn the_show_normals_checkbox_switches_the_lines_off_and_on() {
+    let script = r#"
+        start --window 1280x1000 normals
+        sleep 2
+        key F12; shot 1
+        xdotool mousemove 121 692; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        sleep 1
+        key F12; shot 2
+        xdotool mousemove 121 751; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        sleep 1
+        key F12; shot 3
+        quit
+    "#;
+    let Some((dir, log)) = drive("gloss-window-normals", "1280x1024x24", script) else {
+        return;
+    };
+    let yellow = |img: &image::RgbaImage| {
+        img.pixels()
+            .filter(|p| p[0] >= 250 && p[1] >= 250 && p[2] <= 5)
+            .count()
+    };
+    let (on, off, again) = (
+        shot(&dir, &log, 1),
+        shot(&dir, &log, 2),
+        shot(&dir, &log, 3),
+    );
+    assert!(yellow(&on) > 2000, "only {} line pixels", yellow(&on));
+    assert_eq!(
+        yellow(&off),
+        0,
+        "the checkbox did not switch the normals off"
+    );
+    assert!(
+        differing(&on, &again, 2) < 0.001,
+        "switched on again, the view is not what it was: {:.4} differs",
+        differing(&on, &again, 2)
+    );
 }

@@ -57,9 +57,18 @@ pub const NORMAL_COLOR: Vec3 = Vec3::new(1.0, 1.0, 0.0);
 
 /// The program's stages, for the tests that capture its lines.
 pub const STAGES: [(u32, &str); 3] = [
-    (glow::VERTEX_SHADER, "vertex_geometry/visualizing_normals.vert"),
-    (glow::GEOMETRY_SHADER, "vertex_geometry/visualizing_normals.geom"),
-    (glow::FRAGMENT_SHADER, "vertex_geometry/visualizing_normals.frag"),
+    (
+        glow::VERTEX_SHADER,
+        "vertex_geometry/visualizing_normals.vert",
+    ),
+    (
+        glow::GEOMETRY_SHADER,
+        "vertex_geometry/visualizing_normals.geom",
+    ),
+    (
+        glow::FRAGMENT_SHADER,
+        "vertex_geometry/visualizing_normals.frag",
+    ),
 ];
 
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {

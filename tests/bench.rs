@@ -345,6 +345,40 @@ fn bench_measures_the_particles_both_ways() {
 }
 
 #[test]
+fn bench_measures_instancing_both_ways_with_equal_images() {
+    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args([
+            "bench",
+            "--instancing",
+            "300",
+            "--frames",
+            "1",
+            "--warmup",
+            "0",
+        ])
+        .args(["--size", "96x54"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rows: Vec<&str> = (stdout.lines())
+        .filter(|l| l.trim_start().starts_with("300 ") && !l.contains("rocks:"))
+        .collect();
+    assert_eq!(rows.len(), 2, "{stdout}");
+    // Instanced: no transforms a frame; one draw per rock: 64 bytes each.
+    assert!(
+        rows[0].contains("instanced") && rows[0].contains(" 0 "),
+        "{stdout}"
+    );
+    assert!(rows[1].contains("19200"), "{stdout}");
+    assert!(
+        stdout.contains("images differ by at most 0/255"),
+        "{stdout}"
+    );
+}
+
+#[test]
 fn front_to_back_shades_fewer_fragments_a_pixel() {
     let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
         .args([

@@ -85,6 +85,11 @@ pub struct BenchArgs {
     /// scenes/skinned-arm.toml.
     #[arg(long, value_delimiter = ',', conflicts_with_all = ["vary", "aa", "scaling", "particles"])]
     pub skinning: Vec<usize>,
+    /// Measure instancing instead, at these rock counts: one instanced
+    /// draw against one draw per rock (src/bench/instancing.rs); default
+    /// scene scenes/instancing.toml.
+    #[arg(long, value_delimiter = ',', conflicts_with_all = ["vary", "aa", "scaling", "particles", "skinning"])]
+    pub instancing: Vec<usize>,
     /// Where the CSV and the plot go.
     #[arg(long, default_value = "target/bench")]
     pub out: PathBuf,

@@ -18,7 +18,8 @@
 //! floor), `bound` (the far field's error bound), `pareto` (settings no
 //! other beats), `overdraw` (fragments a pixel), `particles` (the geometry
 //! shader's points against quads built on the CPU), `skinning` (the GPU's
-//! skinning pass against the CPU reference).
+//! skinning pass against the CPU reference), `instancing` (one instanced
+//! draw against one draw per object).
 
 pub mod aa;
 mod args;
@@ -28,6 +29,7 @@ mod csv;
 pub mod filtering;
 mod floor;
 mod headless;
+mod instancing;
 mod overdraw;
 pub mod pareto;
 mod particles;
@@ -93,6 +95,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         _ if args.ssao => "scenes/ambient-occlusion.toml",
         _ if !args.particles.is_empty() => "scenes/particles.toml",
         _ if !args.skinning.is_empty() => "scenes/skinned-arm.toml",
+        _ if !args.instancing.is_empty() => "scenes/instancing.toml",
         _ => "scenes/many-lights.toml",
     };
     let scene_path = (args.scene.clone()).unwrap_or_else(|| PathBuf::from(default));
@@ -110,6 +113,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         _ if args.scaling => return scaling::run(args, &base, &ctx, software),
         _ if !args.particles.is_empty() => return particles::run(args, &base, &ctx),
         _ if !args.skinning.is_empty() => return skinning::run(args, &base, &ctx),
+        _ if !args.instancing.is_empty() => return instancing::run(args, &base, &ctx),
         _ if !args.vary.is_empty() => return variants::run(args, &scene_path, &ctx, software),
         _ => {}
     }

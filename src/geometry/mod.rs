@@ -48,6 +48,7 @@ mod mtl;
 mod normals;
 mod obj;
 mod polygons;
+mod rock;
 mod shapes;
 pub mod skin;
 mod tangents;
@@ -67,6 +68,7 @@ pub use mtl::{MAX_MTL_BYTES, MAX_MTL_MATERIALS, MtlMaterial, load_mtl, parse_mtl
 pub use normals::compute_normals;
 pub use obj::{MAX_OBJ_BYTES, MAX_OBJ_VERTICES, ObjFile, ObjPart, load_obj, load_obj_file};
 pub use polygons::{newell_normal, triangulate};
+pub use rock::rock;
 pub use shapes::{cone, cube, cylinder, fullscreen_triangle, icosphere, plane, torus, uv_sphere};
 pub use tangents::compute_tangents;
 pub use volumes::{bounding_radius, light_volume_sphere};

@@ -53,6 +53,10 @@ pub(super) struct SceneFile {
     pub(super) tessellation: Option<super::tessellation::TessellationFile>,
     /// A particle fountain (src/scene/particles.rs).
     pub(super) particles: Option<super::particles::ParticlesFile>,
+    /// Outlined objects (src/scene/outlines.rs).
+    pub(super) outlines: Option<super::outlines::OutlinesFile>,
+    /// A field of instanced rocks (src/scene/instancing.rs).
+    pub(super) instancing: Option<super::instancing::InstancingFile>,
 }
 
 /// One `[[views]]` entry.
@@ -136,6 +140,14 @@ pub(super) struct RenderFile {
     pub(super) msaa: u32,
     pub(super) frustum_culling: bool,
     pub(super) wireframe: bool,
+    /// Draw the `[outlines]` (src/scene/outlines.rs), this many pixels wide.
+    pub(super) outlines: bool,
+    pub(super) outline_width: u32,
+    /// Draw the `[instancing]` field with one instanced draw (false: one draw per rock).
+    pub(super) instancing: bool,
+    /// Draw every opaque object's vertex normals as lines (a geometry shader).
+    pub(super) show_normals: bool,
+    pub(super) normal_length: f32,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
     pub(super) texture_filter: super::texturing::FilterOverride,
@@ -185,6 +197,11 @@ impl Default for RenderFile {
             msaa: 1,
             frustum_culling: true,
             wireframe: false,
+            outlines: true,
+            outline_width: 4,
+            instancing: true,
+            show_normals: false,
+            normal_length: 0.2,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
             texture_filter: super::texturing::FilterOverride::Material,

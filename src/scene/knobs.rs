@@ -12,18 +12,22 @@ use glam::Vec3;
 mod animation;
 mod blending;
 pub mod keys;
+mod instancing;
 mod lighting;
 mod parallax;
 mod sky;
+mod stencil;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
+pub use instancing::{INSTANCING, NORMAL_LENGTH, SHOW_NORMALS};
 pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
     STENCIL_VOLUMES, TILE_SIZE,
 };
 pub use parallax::{PARALLAX, PARALLAX_LAYERS, PARALLAX_SHADOWS, PARALLAX_UV};
 pub use sky::SKY_FIRST;
+pub use stencil::{OUTLINE_WIDTH, OUTLINES};
 pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
 /// What a knob holds.
@@ -358,6 +362,11 @@ pub static ALL: &[&Knob] = &[
     &SPECIALIZE,
     &FRUSTUM_CULLING,
     &WIREFRAME,
+    &OUTLINES,
+    &OUTLINE_WIDTH,
+    &INSTANCING,
+    &SHOW_NORMALS,
+    &NORMAL_LENGTH,
     &TEXTURE_FILTER,
     &INTERPOLATION,
     &MIP_COLORS,
@@ -372,6 +381,18 @@ pub static ALL: &[&Knob] = &[
     &MSAA,
     &SKINNING_ON,
     &JOINT_STORAGE,
+];
+
+/// Whether a switch applies to a scene (it has what the technique draws).
+pub type AppliesTo = fn(&super::Scene) -> bool;
+
+/// Knobs that switch a technique off: when one is off, its technique adds
+/// no pass and leaves the panel's list with its knobs, so the panel shows
+/// these (for a scene they apply to) among the techniques not in the frame,
+/// to switch them on again.
+pub static SWITCHES: &[(&Knob, AppliesTo)] = &[
+    (&OUTLINES, |s| s.outlines.is_some()),
+    (&SHOW_NORMALS, |s| s.opaque_objects() > 0),
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

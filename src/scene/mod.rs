@@ -23,6 +23,7 @@ pub mod fxaa;
 pub mod gltf_material;
 pub mod gltf_objects;
 pub mod hierarchy;
+pub mod instancing;
 pub mod knobs;
 mod light_grid;
 mod light_maps;
@@ -34,6 +35,7 @@ mod mirrors;
 pub mod obj_materials;
 mod object_field_file;
 pub mod object_fields;
+pub mod outlines;
 mod overrides;
 pub mod particles;
 pub mod post;
@@ -255,6 +257,12 @@ pub struct Scene {
     /// `[particles]`: a particle fountain, drawn as points a geometry shader
     /// turns into quads.
     pub particles: Option<particles::Particles>,
+    /// `[outlines]`: objects outlined with the stencil buffer
+    /// (src/techniques/stencil/object_outlines.rs).
+    pub outlines: Option<outlines::Outlines>,
+    /// `[instancing]`: a field of rocks drawn with instanced arrays
+    /// (src/techniques/vertex_geometry/instancing.rs).
+    pub instancing: Option<instancing::Instancing>,
     /// `[[clip_planes]]`: world-space planes (n, -n . p), |n| = 1; what lies
     /// on the side n points away from is cut away (gl_ClipDistance[1..]).
     pub clip_planes: Vec<glam::Vec4>,

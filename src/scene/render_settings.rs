@@ -140,6 +140,30 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         frustum_culling: r.frustum_culling,
         wireframe: r.wireframe,
+        outlines: r.outlines,
+        instancing: r.instancing,
+        show_normals: r.show_normals,
+        normal_length: {
+            if !(r.normal_length.is_finite() && r.normal_length > 0.0 && r.normal_length <= 100.0) {
+                bail!(
+                    "render.normal_length: expected a length in world units, > 0 and <= 100, found {}",
+                    r.normal_length
+                );
+            }
+            r.normal_length
+        },
+        outline_width: {
+            let widths = super::outlines::OUTLINE_WIDTHS;
+            if !widths.contains(&r.outline_width) {
+                bail!(
+                    "render.outline_width: expected {}..={} pixels, found {}",
+                    widths.start(),
+                    widths.end(),
+                    r.outline_width
+                );
+            }
+            r.outline_width
+        },
         skinning_on: r.skinning_on,
         joint_storage: r.joint_storage,
         texture_filter: r.texture_filter,
@@ -234,6 +258,17 @@ pub struct RenderSettings {
     /// The forward and G-buffer passes draw triangles' edges only
     /// (glPolygonMode(GL_FRONT_AND_BACK, GL_LINE)): where the clipper cut them.
     pub wireframe: bool,
+    /// Draw the scene's `[outlines]` (src/techniques/stencil/object_outlines.rs),
+    /// `outline_width` pixels wide.
+    pub outlines: bool,
+    pub outline_width: u32,
+    /// The `[instancing]` rocks in one glDrawElementsInstanced (true) or
+    /// one glDrawElements per rock (src/techniques/vertex_geometry/instancing.rs).
+    pub instancing: bool,
+    /// Draw every opaque object's vertex normals, `normal_length` long, as
+    /// lines a geometry shader makes (src/techniques/vertex_geometry/visualizing_normals.rs).
+    pub show_normals: bool,
+    pub normal_length: f32,
     /// Where skinned meshes are skinned: the GPU pass, or the CPU reference.
     pub skinning_on: SkinningOn,
     /// Where the skinning pass reads the joint matrices from.

@@ -71,6 +71,13 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
     animation
         .rest
         .extend(gltf.rest.into_iter().filter(|r| !moved.contains(&r.0)));
+    let outlines = super::outlines::resolve(f.outlines.as_ref(), &objects)?;
+    if outlines.is_some() && mirrors * (render.mirror_depth as usize + 1) > 127 {
+        bail!(
+            "outlines: the outline takes the stencil's top bit; {mirrors} mirrors x (render.mirror_depth {} + 1) stencil values do not fit in the 7 bits left (127)",
+            render.mirror_depth
+        );
+    }
     let mut scene = Scene {
         name,
         path: path.to_path_buf(),
@@ -90,6 +97,8 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
         animation,
         tessellation: super::tessellation::resolve(f.tessellation.as_ref(), base)?,
         particles: super::particles::resolve(f.particles.as_ref())?,
+        outlines,
+        instancing: super::instancing::resolve(f.instancing.as_ref())?,
         clip_planes: super::clip_planes::clip_planes(&f.clip_planes)?,
         sky: super::sky::sky(&f.sky)?,
         skybox: super::skybox::skybox(&f.skybox, f.sky.is_some(), base)?,

@@ -187,6 +187,27 @@ impl Scene {
                 r.billboards
             ),
         );
+        let no_outlines = "has no effect: the scene has no [outlines]";
+        warn(
+            "outlines",
+            self.outlines.is_none() && !r.outlines,
+            "false".into(),
+            no_outlines,
+        );
+        let width = r.outline_width.to_string();
+        warn(
+            "outline_width",
+            self.outlines.is_none() && r.outline_width != 4,
+            width,
+            no_outlines,
+        );
+        let no_field = "has no effect: the scene has no [instancing] field";
+        warn(
+            "instancing",
+            self.instancing.is_none() && !r.instancing,
+            "false".into(),
+            no_field,
+        );
         let transparent =
             (self.objects.iter()).any(|o| self.materials[o.material].is_transparent());
         warn(

@@ -52,11 +52,19 @@ pub static ALL: &[&Technique] = &[
     // Added to the accumulated light, before the composite reads it.
     &sky::skybox_reflection::SKYBOX_REFLECTION,
     &deferred::composite::COMPOSITE,
+    // Opaque rocks after every path's opaque world (its depth is in the
+    // world target by now), before the mirrors and the sky.
+    &vertex_geometry::instancing::INSTANCING,
     &stencil::mirror::MIRROR,
     &fragment_tests::viewports::VIEWPORTS,
     // The sky behind the opaque world, before what blends over it.
     &sky::sun_sky::SUN_SKY,
     &sky::skybox::SKYBOX,
+    // Over the finished opaque world and the sky (the outline is drawn with
+    // the depth test off, over the background too); under the glass.
+    &stencil::object_outlines::OBJECT_OUTLINES,
+    // A debug view over the finished opaque world and sky.
+    &vertex_geometry::visualizing_normals::VISUALIZING_NORMALS,
     &billboards::billboards::BILLBOARDS,
     &vertex_geometry::particles::PARTICLES,
     &blending::transparency::TRANSPARENCY,

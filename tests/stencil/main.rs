@@ -12,6 +12,9 @@
 //! * `gloss plan` has no stencil pass without a mirror; every mirror pass
 //!   restores the GL state; bad mirrors are clear scene errors.
 //!
+//! Object outlines (LearnOpenGL, Stencil testing): the band's width in
+//! pixels against the silhouette projected by hand (object_outlines.rs).
+//!
 //! Every render runs with GL debug output on and fails on any GL error.
 
 #[path = "../common/mod.rs"]
@@ -19,3 +22,4 @@ mod common;
 
 mod functions;
 mod mirror;
+mod object_outlines;

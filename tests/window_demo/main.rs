@@ -10,6 +10,7 @@
 mod input;
 mod layout;
 mod probe;
+mod switches;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

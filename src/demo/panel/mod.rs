@@ -334,6 +334,13 @@ fn technique_section(ui: &mut egui::Ui, input: &PanelInput, actions: &mut Vec<Ac
                 ui.separator();
                 ui.weak(format!("not in this frame: {}", idle.join(", ")));
             }
+            // A technique switched off: its switch stays, to turn it on.
+            for (k, applies) in knobs::SWITCHES {
+                if applies(input.scene) && !shown.contains(&k.key) {
+                    shown.push(k.key);
+                    changed |= knob::show(ui, k, &mut settings);
+                }
+            }
             if changed {
                 actions.push(Action::Settings(settings));
             }

@@ -2,3 +2,4 @@
 
 pub mod mirror;
 mod mirror_order;
+pub mod object_outlines;

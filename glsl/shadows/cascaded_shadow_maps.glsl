@@ -53,6 +53,14 @@ float cascade_visibility(int k, vec3 P, vec3 N, vec3 L, vec4 b) {
     return pcf_cascade(vec4(c.xy, float(k), c.z), int(b.z), 1.0 / b.w);
 }
 
+// The cascade colours (shadow.cascade_colors): the last lookup's cascade
+// tint, which output_color (common/lighting_output.glsl) multiplies into
+// the pixel when the shader includes this file before that one (the forward
+// and transparent passes; the deferred paths add light in passes of their
+// own, and their composite shows no tint).
+#define CASCADE_TINT 1
+vec3 g_cascade_tint = vec3(1.0);
+
 // The tint of cascade k when u_cascade_flags.x is set (else white).
 vec3 cascade_tint(int k) {
     const vec3 TINTS[MAX_CASCADES] = vec3[](
@@ -83,6 +91,9 @@ float cascaded_shadow(vec3 P, vec3 N, vec3 L, vec4 b) {
     if (k + 1 < count && band > 0.0 && to_split < band) {
         float t = clamp(to_split / band, 0.0, 1.0);
         lit = mix(cascade_visibility(k + 1, P, N, L, b), lit, t);
+        g_cascade_tint = mix(cascade_tint(k + 1), cascade_tint(k), t);
+    } else {
+        g_cascade_tint = cascade_tint(k);
     }
     return lit;
 }

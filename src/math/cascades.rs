@@ -132,22 +132,27 @@ pub fn fit(
 
 /// Every cascade of a light along `direction`: the camera's `frustum`
 /// corners (near plane at view depth `near`, far plane at `far`) split
-/// into `m` slices with weight `lambda` (`splits`).
+/// into `m` slices with weight `lambda` (`splits`). Cascade i + 1 is also
+/// fitted around the last `blend` of cascade i's range, where the lookup
+/// blends the two: without it a point in that band may lie outside the
+/// next cascade's box, and read as lit there (a gap in the shadow).
 #[allow(clippy::too_many_arguments)]
 pub fn cascades(
     direction: Vec3,
     frustum: &[Vec3],
     (near, far): (f32, f32),
     casters: &[Vec3],
-    (m, lambda): (u32, f32),
+    (m, lambda, blend): (u32, f32, f32),
     resolution: u32,
     stable: bool,
 ) -> Option<Vec<Cascade>> {
     let z = splits(near, far, m, lambda);
-    z.windows(2)
-        .map(|w| {
-            let s = slice(frustum, near, far, w[0], w[1]);
-            fit(direction, &s, casters, (w[0], w[1]), resolution, stable)
+    (0..m as usize)
+        .map(|i| {
+            let (a, b) = (z[i], z[i + 1]);
+            let from = if i > 0 { a - blend * (a - z[i - 1]) } else { a };
+            let s = slice(frustum, near, far, from, b);
+            fit(direction, &s, casters, (a, b), resolution, stable)
         })
         .collect()
 }
@@ -190,7 +195,7 @@ mod tests {
         let casters = corners(Vec3::splat(-40.0), Vec3::splat(40.0));
         for stable in [false, true] {
             let d = Vec3::new(0.3, -1.0, 0.2);
-            let cs = cascades(d, &f, (1.0, 9.0), &casters, (4, 0.5), 512, stable).unwrap();
+            let cs = cascades(d, &f, (1.0, 9.0), &casters, (4, 0.5, 0.0), 512, stable).unwrap();
             for c in &cs {
                 let s = slice(&f, 1.0, 9.0, c.near, c.far);
                 for p in s {
@@ -211,7 +216,7 @@ mod tests {
         let d = Vec3::new(0.4, -1.0, 0.1);
         let at = |shift: Vec3, stable: bool| {
             let moved: Vec<Vec3> = f.iter().map(|&p| p + shift).collect();
-            cascades(d, &moved, (1.0, 9.0), &casters, (3, 0.0), 1024, stable).unwrap()
+            cascades(d, &moved, (1.0, 9.0), &casters, (3, 0.0, 0.0), 1024, stable).unwrap()
         };
         let a = at(Vec3::ZERO, true);
         let b = at(Vec3::new(0.0123, 0.0, 0.0371), true);

@@ -50,7 +50,7 @@ pub(super) fn light_view(
         visible,
         (near, far),
         scene_points,
-        (s.cascades, s.split_lambda()),
+        (s.cascades, s.split_lambda(), s.blend),
         s.resolution,
         s.stable,
     )?;

@@ -245,7 +245,8 @@ impl ShadowMaps {
         let empty_cube = DepthMap::new_cube(gl, 1, false)?;
         as_shadow_sampler(gl, &empty_2d, Pcf::None);
         as_shadow_sampler(gl, &empty_cube, Pcf::None);
-        let cascades = cascades::CascadeBlock::new(gl)?;
+        let mut cascades = cascades::CascadeBlock::new(gl)?;
+        cascades.needed = cascades::read_by(scene);
         if let Some(a) = &cascades.empty {
             as_shadow_sampler(gl, a, Pcf::None);
         }
@@ -272,6 +273,7 @@ impl ShadowMaps {
     /// resolution or way of drawing a cube allocates the maps anew.
     pub fn take_casters(&mut self, gl: &Gl, scene: &Scene) -> Result<()> {
         let new = casters(scene);
+        self.cascades.needed = cascades::read_by(scene);
         let same_textures = new.len() == self.maps.len()
             && new.iter().zip(&self.maps).all(|(n, (o, _))| {
                 let key = |c: &Caster| {

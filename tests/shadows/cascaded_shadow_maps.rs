@@ -13,6 +13,7 @@
 //!   cascades shimmer.
 
 use crate::common;
+use glam::Vec3;
 use gloss::bench::shadows::{ShadowEvaluation, evaluate};
 use gloss::frame::views::View;
 use gloss::image_compare::shadow_mask::GlShadow;
@@ -20,7 +21,6 @@ use gloss::image_compare::shadow_metrics::Visibility;
 use gloss::lighting::shadow_reference::pixel_world_point;
 use gloss::renderer::{Output, render_scene};
 use gloss::scene::{CascadeSplit, Pcf, Scene};
-use glam::Vec3;
 
 fn small() -> Scene {
     let mut s = common::scene("cascaded-shadows.toml");
@@ -35,7 +35,9 @@ fn set(s: &mut Scene, cascades: u32, split: CascadeSplit, lambda: f32) {
 
 fn save(label: &str, e: &ShadowEvaluation) {
     let dir = common::out_dir();
-    e.images[0].save(dir.join(format!("{label}.actual.png"))).unwrap();
+    e.images[0]
+        .save(dir.join(format!("{label}.actual.png")))
+        .unwrap();
 }
 
 /// (cascades, split, lambda, the most misclassified, measured 0.38%,
@@ -71,7 +73,11 @@ fn each_count_and_split_against_the_exact_shadows() {
     }
     // The single map over a hundred units of field is blocky near the
     // camera; four practical cascades are at least ten times closer.
-    assert!(errors[0] > 0.002, "the single map: {:.3}%", errors[0] * 100.0);
+    assert!(
+        errors[0] > 0.002,
+        "the single map: {:.3}%",
+        errors[0] * 100.0
+    );
     assert!(errors[7] * 10.0 < errors[0], "{errors:?}");
     // With perspective, more of the near range beats equal ranges.
     assert!(errors[5] < errors[4] && errors[6] < errors[4], "{errors:?}");
@@ -190,7 +196,9 @@ fn frame(s: &Scene, ctx: &gloss::gl::Headless) -> Frame {
     let (w, h) = (r.width as usize, r.height as usize);
     let depth = r.read_depth();
     let image = r.read_image();
-    let inverse = r.frame_uniforms(&s.camera, &View::camera()).inverse_view_projection;
+    let inverse = r
+        .frame_uniforms(&s.camera, &View::camera())
+        .inverse_view_projection;
     let mut dark = vec![None; w * h];
     for y in 0..h {
         for x in 0..w {
@@ -219,7 +227,9 @@ fn flips(a: &Frame, b: &Frame) -> usize {
     let mut n = 0;
     for y in 0..h {
         for x in 0..w {
-            let Some(now) = b.dark[y * w + x] else { continue };
+            let Some(now) = b.dark[y * w + x] else {
+                continue;
+            };
             let p = pixel_world_point(x, y, b.depth[y * w + x], inverse, w, h);
             let q = a.view_projection.project_point3(p);
             let (xa, ya) = ((q.x + 1.0) * 0.5 * w as f32, (q.y + 1.0) * 0.5 * h as f32);
@@ -230,8 +240,9 @@ fn flips(a: &Frame, b: &Frame) -> usize {
             // land either side of an edge that did not move.
             let (xa, ya) = (xa as usize, ya as usize);
             let then = a.dark[ya * w + xa];
-            let alike = (ya.saturating_sub(1)..(ya + 2).min(h))
-                .all(|y| (xa.saturating_sub(1)..(xa + 2).min(w)).all(|x| a.dark[y * w + x] == then));
+            let alike = (ya.saturating_sub(1)..(ya + 2).min(h)).all(|y| {
+                (xa.saturating_sub(1)..(xa + 2).min(w)).all(|x| a.dark[y * w + x] == then)
+            });
             if let (Some(then), true) = (then, alike) {
                 n += (then != now) as usize;
             }
@@ -261,7 +272,12 @@ fn moving_the_camera_a_fraction_of_a_texel_stable_cascades_do_not_shimmer() {
                 frame(&f, &ctx)
             })
             .collect();
-        by_fit.push(frames.windows(2).map(|p| flips(&p[0], &p[1])).sum::<usize>());
+        by_fit.push(
+            frames
+                .windows(2)
+                .map(|p| flips(&p[0], &p[1]))
+                .sum::<usize>(),
+        );
     }
     // Measured on llvmpipe: stable 0, tight 356 pixels over five pairs.
     let (stable, tight) = (by_fit[0], by_fit[1]);

@@ -132,7 +132,10 @@ fn cascades(ui: &mut egui::Ui, i: usize, s: &mut Shadow, before: &[Light]) -> bo
         changed |= ui.add_enabled(enabled, slider).changed();
     });
     if other && s.cascades <= 1 {
-        ui.colored_label(REFUSED, "another directional light cascades already: at most one may");
+        ui.colored_label(
+            REFUSED,
+            "another directional light cascades already: at most one may",
+        );
     }
     // Each layer is a full map: keep to the loader's 512 MiB.
     while u64::from(s.cascades) * u64::from(s.resolution).pow(2) > 1 << 27 {

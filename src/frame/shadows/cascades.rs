@@ -76,11 +76,21 @@ pub(super) fn check_units(gl: &Gl) -> Result<()> {
     Ok(())
 }
 
+/// Whether `scene`'s lighting programs read the cascades: a light
+/// cascades, or the general shader (render.specialize off) has the lookup.
+pub(super) fn read_by(scene: &crate::scene::Scene) -> bool {
+    let cascaded = |l: &crate::scene::Light| l.shadow.is_some_and(|s| s.cascades > 1);
+    !scene.render.specialize || scene.lights.iter().any(cascaded)
+}
+
 /// The `Cascades` block and a 1 x 1 x 1 array for the unit when no light
 /// cascades (a program that reads the sampler wants a complete texture).
+/// Bound only when `needed` (`read_by`): other frames' lighting passes
+/// make no call for the cascades.
 pub(super) struct CascadeBlock {
     ubo: Buffer,
     pub(super) empty: Option<DepthMap>,
+    pub(super) needed: bool,
 }
 
 impl CascadeBlock {
@@ -90,13 +100,20 @@ impl CascadeBlock {
             Ok(()) => Some(DepthMap::new_array(gl, 1, 1)?),
             Err(_) => None,
         };
-        let b = CascadeBlock { ubo, empty };
+        let b = CascadeBlock {
+            ubo,
+            empty,
+            needed: true,
+        };
         b.ubo.write(&vec![0u8; BLOCK_SIZE]);
         Ok(b)
     }
 
     /// Write this frame's cascades (none: a count of 0).
     pub(super) fn write(&self, camera: &Camera, cascaded: Option<(&Caster, &LightView)>) {
+        if !self.needed {
+            return;
+        }
         let mut out = vec![0u8; BLOCK_SIZE];
         let mut put = |at: usize, v: &[f32]| {
             for (k, x) in v.iter().enumerate() {
@@ -127,6 +144,9 @@ impl CascadeBlock {
     /// Bind the block and, on the cascades' unit, the empty array (the
     /// cascaded light's map, bound after, replaces it).
     pub(super) fn bind(&self, gl: &glow::Context) {
+        if !self.needed {
+            return;
+        }
         unsafe {
             if let Some(e) = &self.empty {
                 gl.active_texture(glow::TEXTURE0 + UNIT_CASCADES);
@@ -137,6 +157,9 @@ impl CascadeBlock {
     }
 
     pub(super) fn unbind(&self, gl: &glow::Context) {
+        if !self.needed {
+            return;
+        }
         unsafe {
             if self.empty.is_some() {
                 gl.active_texture(glow::TEXTURE0 + UNIT_CASCADES);

@@ -11,9 +11,8 @@
 //!   same value whichever face holds it (docs/shadows.md says why that
 //!   beats the perspective depth).
 //!
-//! - A directional light with `shadow.cascades > 1` (at most one) has a
-//!   GL_TEXTURE_2D_ARRAY of cascades instead, on a unit of its own, and
-//!   the `Cascades` block (src/frame/shadows/cascades.rs); it keeps its slot.
+//! - A directional light with `shadow.cascades > 1` has a GL_TEXTURE_2D_ARRAY
+//!   of cascades instead, and the `Cascades` block (shadows/cascades.rs).
 //!
 //! The shadow pass (src/techniques/shadows/shadow_map.rs, and
 //! cascaded_shadow_maps.rs for the cascades) draws the maps;
@@ -23,7 +22,6 @@ use crate::frame::draw_list::DrawList;
 use crate::gl::Gl;
 use crate::gl::buffer::Buffer;
 use crate::gl::depth_map::DepthMap;
-use crate::gl::program::Program;
 use crate::math::shadow as matrices;
 use crate::scene::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D};
 use crate::scene::{Camera, CubeRender, LightKind, Pcf, Scene, Shadow};
@@ -33,8 +31,10 @@ use glow::HasContext;
 
 mod block;
 mod cascades;
+mod sampler;
 use block::block_size;
 pub use cascades::{CASCADES_BINDING, UNIT_CASCADES};
+pub use sampler::setup_program;
 
 /// The uniform-block binding point of the `Shadows` block.
 pub const SHADOWS_BINDING: u32 = 1;
@@ -238,17 +238,17 @@ impl ShadowMaps {
             } else {
                 DepthMap::new_2d(gl, size)?
             };
-            as_shadow_sampler(gl, &map, c.shadow.pcf);
+            sampler::as_shadow_sampler(gl, &map, c.shadow.pcf);
             maps.push((c, map));
         }
         let empty_2d = DepthMap::new_2d(gl, 1)?;
         let empty_cube = DepthMap::new_cube(gl, 1, false)?;
-        as_shadow_sampler(gl, &empty_2d, Pcf::None);
-        as_shadow_sampler(gl, &empty_cube, Pcf::None);
+        sampler::as_shadow_sampler(gl, &empty_2d, Pcf::None);
+        sampler::as_shadow_sampler(gl, &empty_cube, Pcf::None);
         let mut cascades = cascades::CascadeBlock::new(gl)?;
         cascades.needed = cascades::read_by(scene);
         if let Some(a) = &cascades.empty {
-            as_shadow_sampler(gl, a, Pcf::None);
+            sampler::as_shadow_sampler(gl, a, Pcf::None);
         }
         let ubo = Buffer::new(
             gl,
@@ -288,7 +288,7 @@ impl ShadowMaps {
         }
         for (n, (o, map)) in new.into_iter().zip(&mut self.maps) {
             if n.shadow.pcf != o.shadow.pcf {
-                as_shadow_sampler(gl, map, n.shadow.pcf);
+                sampler::as_shadow_sampler(gl, map, n.shadow.pcf);
             }
             *o = n;
         }
@@ -352,59 +352,4 @@ impl ShadowMaps {
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, SHADOWS_BINDING, None);
         }
     }
-}
-
-/// The notes' "specialised sampler that takes a 4 component vector and
-/// returns the result of the shadow depth test": GL_TEXTURE_COMPARE_MODE =
-/// GL_COMPARE_REF_TO_TEXTURE, with GL_LEQUAL ("z <= light depth: lit").
-/// GL_LINEAR filtering makes the hardware compare the four nearest texels
-/// and blend the results (2x2 PCF); outside a 2D map the border depth 1.0
-/// leaves points lit.
-fn as_shadow_sampler(gl: &Gl, map: &DepthMap, pcf: Pcf) {
-    let t = map.target;
-    let filter = if pcf == Pcf::Hardware {
-        glow::LINEAR
-    } else {
-        glow::NEAREST
-    } as i32;
-    unsafe {
-        gl.bind_texture(t, Some(map.texture));
-        let compare = glow::COMPARE_REF_TO_TEXTURE as i32;
-        gl.tex_parameter_i32(t, glow::TEXTURE_COMPARE_MODE, compare);
-        gl.tex_parameter_i32(t, glow::TEXTURE_COMPARE_FUNC, glow::LEQUAL as i32);
-        gl.tex_parameter_i32(t, glow::TEXTURE_MIN_FILTER, filter);
-        gl.tex_parameter_i32(t, glow::TEXTURE_MAG_FILTER, filter);
-        if t == glow::TEXTURE_2D || t == glow::TEXTURE_2D_ARRAY {
-            let border = glow::CLAMP_TO_BORDER as i32;
-            gl.tex_parameter_i32(t, glow::TEXTURE_WRAP_S, border);
-            gl.tex_parameter_i32(t, glow::TEXTURE_WRAP_T, border);
-            gl.tex_parameter_f32_slice(t, glow::TEXTURE_BORDER_COLOR, &[1.0; 4]);
-        } else {
-            for w in [
-                glow::TEXTURE_WRAP_S,
-                glow::TEXTURE_WRAP_T,
-                glow::TEXTURE_WRAP_R,
-            ] {
-                gl.tex_parameter_i32(t, w, glow::CLAMP_TO_EDGE as i32);
-            }
-        }
-        gl.bind_texture(t, None);
-    }
-}
-
-/// Tell a lighting program where the `Shadows` block and the map samplers
-/// are (GLSL 3.30 has no `layout(binding = n)`).
-pub fn setup_program(p: &Program) {
-    p.bind_uniform_block("Shadows", SHADOWS_BINDING);
-    p.bind_uniform_block("Cascades", CASCADES_BINDING);
-    p.use_program();
-    p.set_i32("u_shadow_cascades", UNIT_CASCADES as i32);
-    for i in 0..MAX_SHADOW_MAPS_2D {
-        p.set_i32(&format!("u_shadow_map[{i}]"), (UNIT_2D as usize + i) as i32);
-        p.set_i32(
-            &format!("u_shadow_cube[{i}]"),
-            (UNIT_CUBE as usize + i) as i32,
-        );
-    }
-    p.unuse();
 }

@@ -11,5 +11,8 @@ vec3 srgb_encode(vec3 c) {
 }
 
 vec4 output_color(vec3 c) {
+#ifdef CASCADE_TINT
+    c *= g_cascade_tint;   // the cascade colours (shadows/cascaded_shadow_maps.glsl)
+#endif
     return vec4(u_output_srgb ? srgb_encode(c) : c, 1.0);
 }

@@ -120,6 +120,9 @@ float shadow_cube(int i, vec3 d, float ref, int kernel, float texel) {
     return pcf_cube(u_shadow_cube[3], d, ref, kernel, texel);
 }
 
+// A directional light's cascades (cascaded_shadow).
+#include "shadows/cascaded_shadow_maps.glsl"
+
 // How much of light `light_index` reaches P (normal N): 1 lit, 0 shadowed.
 float shadow_visibility(int light_index, vec3 P, vec3 N) {
     int slot = u_shadow_of[light_index / 4][light_index % 4];
@@ -128,6 +131,10 @@ float shadow_visibility(int light_index, vec3 P, vec3 N) {
     Light light = u_lights[light_index];
     int kind = int(m.kind_texel_near_far.x);
     float texel = m.kind_texel_near_far.y;
+#if VARIANT_CASCADES
+    if (kind == SHADOW_CASCADED)
+        return cascaded_shadow(P, N, -light.direction_radius.xyz, m.bias_offset_pcf_size);
+#endif
     vec3 from_light = P - light.position_type.xyz;
     vec3 L = kind == SHADOW_ORTHOGRAPHIC ? -light.direction_radius.xyz : -normalize(from_light);
     // A texel's size in world units at P: constant for an orthographic map,

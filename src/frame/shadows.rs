@@ -11,14 +11,17 @@
 //!   same value whichever face holds it (docs/shadows.md says why that
 //!   beats the perspective depth).
 //!
-//! The shadow pass (src/techniques/shadows/shadow_map.rs) draws the maps;
+//! - A directional light with `shadow.cascades > 1` has a GL_TEXTURE_2D_ARRAY
+//!   of cascades instead, and the `Cascades` block (shadows/cascades.rs).
+//!
+//! The shadow pass (src/techniques/shadows/shadow_map.rs, and
+//! cascaded_shadow_maps.rs for the cascades) draws the maps;
 //! lighting passes `bind` them and call `shadow_visibility` in their shaders.
 
 use crate::frame::draw_list::DrawList;
 use crate::gl::Gl;
 use crate::gl::buffer::Buffer;
 use crate::gl::depth_map::DepthMap;
-use crate::gl::program::Program;
 use crate::math::shadow as matrices;
 use crate::scene::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D};
 use crate::scene::{Camera, CubeRender, LightKind, Pcf, Scene, Shadow};
@@ -27,7 +30,11 @@ use glam::{Mat4, Vec3};
 use glow::HasContext;
 
 mod block;
+mod cascades;
+mod sampler;
 use block::block_size;
+pub use cascades::{CASCADES_BINDING, UNIT_CASCADES};
+pub use sampler::setup_program;
 
 /// The uniform-block binding point of the `Shadows` block.
 pub const SHADOWS_BINDING: u32 = 1;
@@ -43,6 +50,7 @@ const SLOTS: usize = MAX_SHADOW_MAPS_2D + MAX_SHADOW_CUBES;
 pub const ORTHOGRAPHIC: i32 = 0;
 pub const PERSPECTIVE: i32 = 1;
 pub const CUBE: i32 = 2;
+pub const CASCADED: i32 = 3;
 
 /// A light that casts a shadow.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,9 +69,16 @@ impl Caster {
         self.slot % MAX_SHADOW_MAPS_2D
     }
 
+    /// A directional light's map split into cascades (a 2D array).
+    pub fn cascaded(&self) -> bool {
+        !self.cube && self.shadow.cascades > 1
+    }
+
     /// The texture unit its map is bound to.
     pub fn unit(&self) -> u32 {
-        if self.cube {
+        if self.cascaded() {
+            UNIT_CASCADES
+        } else if self.cube {
             UNIT_CUBE + self.sampler() as u32
         } else {
             UNIT_2D + self.sampler() as u32
@@ -111,17 +126,19 @@ pub struct LightView {
     /// (orthographic), or per unit of distance from the light (perspective
     /// and cube: 2 tan(half-angle) / resolution).
     pub texel: f32,
+    /// A cascaded map's cascades, one per view-projection (else none).
+    pub cascades: Vec<crate::math::cascades::Cascade>,
 }
 
 /// Where the light looks this frame. `scene_points` are the corners of
 /// every opaque object's box (world); `visible` the corners of the
-/// camera's frustum, cut at the scene's far side. None when there is
-/// nothing to cast onto.
+/// camera's frustum, cut at the scene's far side (from `camera`, whose
+/// depths split the cascades). None when there is nothing to cast onto.
 pub fn light_view(
     scene: &Scene,
     caster: &Caster,
     scene_points: &[Vec3],
-    visible: &[Vec3],
+    (visible, camera): (&[Vec3], &Camera),
 ) -> Option<LightView> {
     let l = &scene.lights[caster.light];
     let s = caster.shadow;
@@ -134,6 +151,9 @@ pub fn light_view(
         d.fold(0.0f32, f32::max).max(1e-2) * 1.01
     };
     match l.kind {
+        LightKind::Directional if caster.cascaded() => {
+            cascades::light_view(l.direction, &s, scene_points, visible, camera)
+        }
         LightKind::Directional => {
             let visible = (s.fit == crate::scene::ShadowFit::Visible).then_some(visible);
             let (m, w, h) = matrices::directional_fitted(l.direction, scene_points, visible)?;
@@ -143,6 +163,7 @@ pub fn light_view(
                 near: 0.0,
                 far: 1.0,
                 texel: w.max(h) / res,
+                cascades: vec![],
             })
         }
         LightKind::Spot => {
@@ -154,6 +175,7 @@ pub fn light_view(
                 near: far * 1e-3,
                 far,
                 texel: 2.0 * l.outer_angle.to_radians().tan() / res,
+                cascades: vec![],
             })
         }
         LightKind::Point => {
@@ -164,6 +186,7 @@ pub fn light_view(
                 near: far * 1e-3,
                 far,
                 texel: 2.0 / res,
+                cascades: vec![],
             })
         }
     }
@@ -194,6 +217,8 @@ pub struct ShadowMaps {
     /// complete texture of the sampler's type on every unit a program reads.
     empty_2d: DepthMap,
     empty_cube: DepthMap,
+    /// The cascades' block and, when the GL has the unit, an empty array.
+    cascades: cascades::CascadeBlock,
     ubo: Buffer,
     max_lights: usize,
 }
@@ -204,19 +229,27 @@ impl ShadowMaps {
         let mut maps = Vec::new();
         for c in casters(scene) {
             let size = c.shadow.resolution as i32;
-            let map = if c.cube {
+            let map = if c.cascaded() {
+                cascades::check_units(gl)?;
+                DepthMap::new_array(gl, size, c.shadow.cascades as i32)?
+            } else if c.cube {
                 let layered = c.shadow.cube == CubeRender::GeometryShader;
                 DepthMap::new_cube(gl, size, layered)?
             } else {
                 DepthMap::new_2d(gl, size)?
             };
-            as_shadow_sampler(gl, &map, c.shadow.pcf);
+            sampler::as_shadow_sampler(gl, &map, c.shadow.pcf);
             maps.push((c, map));
         }
         let empty_2d = DepthMap::new_2d(gl, 1)?;
         let empty_cube = DepthMap::new_cube(gl, 1, false)?;
-        as_shadow_sampler(gl, &empty_2d, Pcf::None);
-        as_shadow_sampler(gl, &empty_cube, Pcf::None);
+        sampler::as_shadow_sampler(gl, &empty_2d, Pcf::None);
+        sampler::as_shadow_sampler(gl, &empty_cube, Pcf::None);
+        let mut cascades = cascades::CascadeBlock::new(gl)?;
+        cascades.needed = cascades::read_by(scene);
+        if let Some(a) = &cascades.empty {
+            sampler::as_shadow_sampler(gl, a, Pcf::None);
+        }
         let ubo = Buffer::new(
             gl,
             glow::UNIFORM_BUFFER,
@@ -228,6 +261,7 @@ impl ShadowMaps {
             maps,
             empty_2d,
             empty_cube,
+            cascades,
             ubo,
             max_lights,
         })
@@ -239,10 +273,14 @@ impl ShadowMaps {
     /// resolution or way of drawing a cube allocates the maps anew.
     pub fn take_casters(&mut self, gl: &Gl, scene: &Scene) -> Result<()> {
         let new = casters(scene);
+        self.cascades.needed = cascades::read_by(scene);
         let same_textures = new.len() == self.maps.len()
             && new.iter().zip(&self.maps).all(|(n, (o, _))| {
-                (n.light, n.slot, n.cube, n.shadow.resolution, n.shadow.cube)
-                    == (o.light, o.slot, o.cube, o.shadow.resolution, o.shadow.cube)
+                let key = |c: &Caster| {
+                    let s = c.shadow;
+                    (c.light, c.slot, c.cube, s.resolution, s.cube, s.cascades)
+                };
+                key(&n) == key(o)
             });
         if !same_textures {
             *self = ShadowMaps::new(gl, scene, self.max_lights)?;
@@ -250,7 +288,7 @@ impl ShadowMaps {
         }
         for (n, (o, map)) in new.into_iter().zip(&mut self.maps) {
             if n.shadow.pcf != o.shadow.pcf {
-                as_shadow_sampler(gl, map, n.shadow.pcf);
+                sampler::as_shadow_sampler(gl, map, n.shadow.pcf);
             }
             *o = n;
         }
@@ -263,9 +301,12 @@ impl ShadowMaps {
         let points = draws.world_corners();
         let visible = visible_corners(camera, aspect, &points);
         self.views = (self.maps.iter())
-            .map(|(c, _)| light_view(scene, c, &points, &visible))
+            .map(|(c, _)| light_view(scene, c, &points, (&visible, camera)))
             .collect();
         self.ubo.write(&block::pack(self));
+        let cascaded = (self.maps.iter().zip(&self.views)).find(|((c, _), _)| c.cascaded());
+        let cascaded = cascaded.and_then(|((c, _), v)| Some((c, v.as_ref()?)));
+        self.cascades.write(camera, cascaded);
     }
 
     /// The lights whose maps are drawn this frame (a caster with nothing to
@@ -287,6 +328,7 @@ impl ShadowMaps {
                 gl.active_texture(glow::TEXTURE0 + UNIT_CUBE + i as u32);
                 gl.bind_texture(glow::TEXTURE_CUBE_MAP, Some(self.empty_cube.texture));
             }
+            self.cascades.bind(gl);
             for (c, map) in &self.maps {
                 gl.active_texture(glow::TEXTURE0 + c.unit());
                 gl.bind_texture(map.target, Some(map.texture));
@@ -305,61 +347,9 @@ impl ShadowMaps {
                 gl.active_texture(glow::TEXTURE0 + UNIT_CUBE + i);
                 gl.bind_texture(glow::TEXTURE_CUBE_MAP, None);
             }
+            self.cascades.unbind(gl);
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, SHADOWS_BINDING, None);
         }
     }
-}
-
-/// The notes' "specialised sampler that takes a 4 component vector and
-/// returns the result of the shadow depth test": GL_TEXTURE_COMPARE_MODE =
-/// GL_COMPARE_REF_TO_TEXTURE, with GL_LEQUAL ("z <= light depth: lit").
-/// GL_LINEAR filtering makes the hardware compare the four nearest texels
-/// and blend the results (2x2 PCF); outside a 2D map the border depth 1.0
-/// leaves points lit.
-fn as_shadow_sampler(gl: &Gl, map: &DepthMap, pcf: Pcf) {
-    let t = map.target;
-    let filter = if pcf == Pcf::Hardware {
-        glow::LINEAR
-    } else {
-        glow::NEAREST
-    } as i32;
-    unsafe {
-        gl.bind_texture(t, Some(map.texture));
-        let compare = glow::COMPARE_REF_TO_TEXTURE as i32;
-        gl.tex_parameter_i32(t, glow::TEXTURE_COMPARE_MODE, compare);
-        gl.tex_parameter_i32(t, glow::TEXTURE_COMPARE_FUNC, glow::LEQUAL as i32);
-        gl.tex_parameter_i32(t, glow::TEXTURE_MIN_FILTER, filter);
-        gl.tex_parameter_i32(t, glow::TEXTURE_MAG_FILTER, filter);
-        if t == glow::TEXTURE_2D {
-            let border = glow::CLAMP_TO_BORDER as i32;
-            gl.tex_parameter_i32(t, glow::TEXTURE_WRAP_S, border);
-            gl.tex_parameter_i32(t, glow::TEXTURE_WRAP_T, border);
-            gl.tex_parameter_f32_slice(t, glow::TEXTURE_BORDER_COLOR, &[1.0; 4]);
-        } else {
-            for w in [
-                glow::TEXTURE_WRAP_S,
-                glow::TEXTURE_WRAP_T,
-                glow::TEXTURE_WRAP_R,
-            ] {
-                gl.tex_parameter_i32(t, w, glow::CLAMP_TO_EDGE as i32);
-            }
-        }
-        gl.bind_texture(t, None);
-    }
-}
-
-/// Tell a lighting program where the `Shadows` block and the map samplers
-/// are (GLSL 3.30 has no `layout(binding = n)`).
-pub fn setup_program(p: &Program) {
-    p.bind_uniform_block("Shadows", SHADOWS_BINDING);
-    p.use_program();
-    for i in 0..MAX_SHADOW_MAPS_2D {
-        p.set_i32(&format!("u_shadow_map[{i}]"), (UNIT_2D as usize + i) as i32);
-        p.set_i32(
-            &format!("u_shadow_cube[{i}]"),
-            (UNIT_CUBE as usize + i) as i32,
-        );
-    }
-    p.unuse();
 }

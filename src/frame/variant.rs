@@ -27,6 +27,8 @@ pub struct LightingVariant {
     pub linear: bool,
     /// Some light casts a shadow (the caster loop and its lookups).
     pub shadows: bool,
+    /// A directional light's map is split into cascades (glsl/shadows/cascaded_shadow_maps.glsl).
+    pub cascades: bool,
     /// Some object's material is microfacet (opaque: the G-buffer has
     /// gAlpha; any: the forward pass shades it), so a pixel may need notes
     /// 03's BRDF rather than Phong's lobe.
@@ -42,6 +44,7 @@ impl LightingVariant {
         windowed: true,
         linear: true,
         shadows: true,
+        cascades: true,
         microfacet: true,
     };
 
@@ -61,6 +64,7 @@ impl LightingVariant {
             windowed: with_radius && scene.render.falloff == Falloff::Windowed,
             linear: with_radius && scene.render.falloff == Falloff::Linear,
             shadows: scene.lights.iter().any(|l| l.shadow.is_some()),
+            cascades: (scene.lights.iter()).any(|l| l.shadow.is_some_and(|s| s.cascades > 1)),
             microfacet: (scene.objects.iter())
                 .any(|o| scene.materials[o.material].microfacet.is_some()),
         }
@@ -81,6 +85,7 @@ impl LightingVariant {
             ("VARIANT_WINDOWED", b(self.windowed)),
             ("VARIANT_LINEAR", b(self.linear)),
             ("VARIANT_SHADOWS", b(self.shadows)),
+            ("VARIANT_CASCADES", b(self.cascades)),
             ("VARIANT_MICROFACET", b(self.microfacet)),
         ]
     }
@@ -111,7 +116,9 @@ impl LightingVariant {
             (false, true) => "linear falloff",
             (false, false) => "notes falloff",
         };
-        let shadows = if self.shadows {
+        let shadows = if self.cascades {
+            "shadows (cascaded)"
+        } else if self.shadows {
             "shadows"
         } else {
             "no shadows"

@@ -18,7 +18,7 @@ pub const FORMAT: u32 = glow::DEPTH_COMPONENT32F;
 pub struct DepthMap {
     gl: Gl,
     pub texture: glow::Texture,
-    /// GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP.
+    /// GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP or GL_TEXTURE_2D_ARRAY.
     pub target: u32,
     /// Texels along a side (of each face).
     pub size: i32,
@@ -64,6 +64,60 @@ impl DepthMap {
         if layered {
             let fb = m.framebuffer("layered cube shadow map", |gl, t| unsafe {
                 gl.framebuffer_texture(glow::FRAMEBUFFER, glow::DEPTH_ATTACHMENT, Some(t), 0)
+            })?;
+            m.framebuffers.push(fb);
+        }
+        Ok(m)
+    }
+
+    /// A GL_TEXTURE_2D_ARRAY of `layers` `size` x `size` images of
+    /// `FORMAT` (a directional light's cascades, one layer each) and a
+    /// framebuffer per layer (glFramebufferTextureLayer): each layer is
+    /// drawn in a pass of its own, with no geometry shader.
+    pub fn new_array(gl: &Gl, size: i32, layers: i32) -> Result<DepthMap> {
+        if !(1..=16384).contains(&size) || !(1..=256).contains(&layers) {
+            bail!("a depth map array of {layers} layers of {size} x {size} texels");
+        }
+        let target = glow::TEXTURE_2D_ARRAY;
+        let mut m = unsafe {
+            let texture = gl
+                .create_texture()
+                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
+            super::live::made(super::live::Kind::Texture);
+            gl.bind_texture(target, Some(texture));
+            gl.tex_image_3d(
+                target,
+                0,
+                FORMAT as i32,
+                size,
+                size,
+                layers,
+                0,
+                glow::DEPTH_COMPONENT,
+                glow::FLOAT,
+                PixelUnpackData::Slice(None),
+            );
+            gl.tex_parameter_i32(target, glow::TEXTURE_MAX_LEVEL, 0);
+            gl.tex_parameter_i32(target, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
+            gl.tex_parameter_i32(target, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+            gl.bind_texture(target, None);
+            DepthMap {
+                gl: gl.clone(),
+                texture,
+                target,
+                size,
+                framebuffers: Vec::new(),
+            }
+        };
+        for layer in 0..layers {
+            let fb = m.framebuffer("cascade layer", |gl, t| unsafe {
+                gl.framebuffer_texture_layer(
+                    glow::FRAMEBUFFER,
+                    glow::DEPTH_ATTACHMENT,
+                    Some(t),
+                    0,
+                    layer,
+                )
             })?;
             m.framebuffers.push(fb);
         }
@@ -149,7 +203,7 @@ impl DepthMap {
     }
 
     /// Read one image back as floats, row 0 at the bottom (`face` 0..6 of a
-    /// cube, 0 for a 2D map): the demo's inspector and the tests.
+    /// cube, a layer of an array, 0 for a 2D map): the demo's inspector and the tests.
     pub fn read(&self, face: u32) -> Vec<f32> {
         let gl = &self.gl;
         let fb = self.framebuffers[face as usize];

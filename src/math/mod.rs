@@ -35,6 +35,7 @@ pub mod shadow;
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 pub mod bump;
+pub mod cascades;
 pub mod cube_map;
 pub mod depth;
 pub mod frustum;

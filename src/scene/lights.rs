@@ -101,6 +101,23 @@ pub(super) fn lights(f: &SceneFile) -> Result<Vec<Light>> {
             "lights: {flat} directional or spot and {cube} point lights cast shadows; at most {MAX_SHADOW_MAPS_2D} and {MAX_SHADOW_CUBES} may (one texture unit each)"
         );
     }
+    // Cascaded shadow maps (docs/shadows/cascaded_shadow_maps.md): one
+    // directional light's map, on one texture unit of its own.
+    let cascaded = |l: &&Light| l.shadow.is_some_and(|s| s.cascades > 1);
+    for (i, l) in lights.iter().enumerate().filter(|(_, l)| cascaded(l)) {
+        if l.kind != LightKind::Directional {
+            bail!(
+                "lights[{i}].shadow.cascades: only a directional light's map is split into cascades, found a {} light",
+                format!("{:?}", l.kind).to_lowercase()
+            );
+        }
+    }
+    let n = lights.iter().filter(cascaded).count();
+    if n > 1 {
+        bail!(
+            "lights: {n} directional lights have shadow.cascades > 1; at most one may (the cascades take one texture unit)"
+        );
+    }
     if let Some(g) = &f.light_grid {
         super::light_grid::check(g)?;
         lights.extend(generate_lights(g));

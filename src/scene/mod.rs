@@ -68,7 +68,7 @@ pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, Cull, DeferredLights, DepthFunc,
     Falloff, JointStorage, MirrorOrder, RenderPath, Shading, SkinMethod, SkinningOn, Winding,
 };
-pub use shadows::{CubeRender, Pcf, Shadow, ShadowFit};
+pub use shadows::{CascadeSplit, CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;
 pub use views::{SplitView, check_viewport};
 

@@ -29,6 +29,12 @@ pub(super) struct ShadowTable {
     pcf: Option<String>,
     fit: Option<String>,
     cube: Option<String>,
+    cascades: Option<u32>,
+    split: Option<String>,
+    lambda: Option<f32>,
+    stable: Option<bool>,
+    blend: Option<f32>,
+    cascade_colors: Option<bool>,
 }
 
 /// Percentage-closer filtering: how many depth comparisons a shadow lookup
@@ -114,6 +120,38 @@ impl CubeRender {
     }
 }
 
+/// How a directional light's cascades divide the camera's depth range
+/// (Zhang et al. 2006, "Parallel-split shadow maps"; docs/shadows/cascaded_shadow_maps.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CascadeSplit {
+    /// Equal depth ranges: C_i = n + (f - n) i / m.
+    Uniform,
+    /// Equal ratios: C_i = n (f / n)^(i / m), the ideal for perspective aliasing.
+    Logarithmic,
+    /// Zhang's practical scheme: lambda x logarithmic + (1 - lambda) x uniform.
+    Practical,
+}
+
+impl CascadeSplit {
+    pub const ALL: [CascadeSplit; 3] = [
+        CascadeSplit::Uniform,
+        CascadeSplit::Logarithmic,
+        CascadeSplit::Practical,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            CascadeSplit::Uniform => "uniform",
+            CascadeSplit::Logarithmic => "logarithmic",
+            CascadeSplit::Practical => "practical",
+        }
+    }
+}
+
+/// The cascades a directional light's map may be split into (one layer of
+/// a GL_TEXTURE_2D_ARRAY each); 1 is the single map of shadow_map.rs.
+pub const MAX_CASCADES: u32 = 8;
+
 /// A light's shadow map and how it is read.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Shadow {
@@ -133,6 +171,19 @@ pub struct Shadow {
     pub pcf: Pcf,
     pub fit: ShadowFit,
     pub cube: CubeRender,
+    /// A directional light's cascades (1..=MAX_CASCADES; 1: one map).
+    pub cascades: u32,
+    pub split: CascadeSplit,
+    /// The practical split's weight of the logarithmic scheme, 0..=1.
+    pub lambda: f32,
+    /// Stable cascades: each a square around its slice's bounding sphere,
+    /// moved in whole texels, so the edges do not shimmer as the camera moves.
+    pub stable: bool,
+    /// The band at the far end of each cascade, as a fraction of its depth
+    /// range, across which the lookup blends into the next cascade.
+    pub blend: f32,
+    /// Tint each cascade's pixels (red, green, blue, yellow, ...): debugging.
+    pub cascade_colors: bool,
 }
 
 /// Resolutions a map may have: powers of two from 64 to 8192.
@@ -149,11 +200,27 @@ impl Default for Shadow {
             pcf: Pcf::Hardware,
             fit: ShadowFit::Visible,
             cube: CubeRender::SixPasses,
+            cascades: 1,
+            split: CascadeSplit::Practical,
+            lambda: 0.5,
+            stable: true,
+            blend: 0.1,
+            cascade_colors: false,
         }
     }
 }
 
 impl Shadow {
+    /// The practical scheme's lambda that gives this split: 0 uniform, 1
+    /// logarithmic (src/math/cascades.rs `splits`).
+    pub fn split_lambda(&self) -> f32 {
+        match self.split {
+            CascadeSplit::Uniform => 0.0,
+            CascadeSplit::Logarithmic => 1.0,
+            CascadeSplit::Practical => self.lambda,
+        }
+    }
+
     /// The defaults for a point light: the same, with 1024-texel faces (six
     /// of them hold 1.5 times the texels of one 2048 map; `gloss bench` on
     /// shadows-point: 2048-texel faces cost 3.4 times the shadow pass of
@@ -229,6 +296,38 @@ pub(super) fn shadow(key: &str, file: Option<&toml::Value>, point: bool) -> Resu
                 anyhow::anyhow!("{key}.cube: expected six_passes or geometry_shader, found \"{s}\"")
             })?,
     };
+    let cascades = t.cascades.unwrap_or(d.cascades);
+    if !(1..=MAX_CASCADES).contains(&cascades) {
+        bail!("{key}.cascades: expected 1..={MAX_CASCADES}, found {cascades}");
+    }
+    // Every layer is a full map: 8 x 8192^2 floats would be 2 GiB.
+    let texels = u64::from(cascades) * u64::from(resolution).pow(2);
+    if texels > 1 << 27 {
+        bail!(
+            "{key}: {cascades} cascades of {resolution} x {resolution} texels are {} MiB of depth; at most 512 MiB (e.g. 8 x 4096 or 4 x 4096)",
+            texels * 4 >> 20
+        );
+    }
+    let split = match &t.split {
+        None => d.split,
+        Some(s) => CascadeSplit::ALL
+            .into_iter()
+            .find(|c| c.name() == s)
+            .ok_or_else(|| {
+                anyhow::anyhow!(
+                    "{key}.split: expected one of {}, found \"{s}\"",
+                    names(CascadeSplit::ALL.map(CascadeSplit::name))
+                )
+            })?,
+    };
+    let lambda = t.lambda.unwrap_or(d.lambda);
+    if !(0.0..=1.0).contains(&lambda) {
+        bail!("{key}.lambda: expected a number in 0..=1, found {lambda}");
+    }
+    let blend = t.blend.unwrap_or(d.blend);
+    if !(0.0..=0.5).contains(&blend) {
+        bail!("{key}.blend: expected a fraction of a cascade in 0..=0.5, found {blend}");
+    }
     Ok(Some(Shadow {
         resolution,
         bias,
@@ -238,6 +337,12 @@ pub(super) fn shadow(key: &str, file: Option<&toml::Value>, point: bool) -> Resu
         pcf,
         fit,
         cube,
+        cascades,
+        split,
+        lambda,
+        stable: t.stable.unwrap_or(d.stable),
+        blend,
+        cascade_colors: t.cascade_colors.unwrap_or(d.cascade_colors),
     }))
 }
 
@@ -261,6 +366,15 @@ pub fn shadow_table(s: &Shadow) -> toml::Table {
     t.insert("pcf".into(), toml::Value::String(s.pcf.name().into()));
     t.insert("fit".into(), toml::Value::String(s.fit.name().into()));
     t.insert("cube".into(), toml::Value::String(s.cube.name().into()));
+    t.insert("cascades".into(), toml::Value::Integer(s.cascades.into()));
+    t.insert("split".into(), toml::Value::String(s.split.name().into()));
+    t.insert("lambda".into(), f(s.lambda));
+    t.insert("stable".into(), toml::Value::Boolean(s.stable));
+    t.insert("blend".into(), f(s.blend));
+    t.insert(
+        "cascade_colors".into(),
+        toml::Value::Boolean(s.cascade_colors),
+    );
     t
 }
 
@@ -270,67 +384,4 @@ pub const MAX_SHADOW_MAPS_2D: usize = 4;
 pub const MAX_SHADOW_CUBES: usize = 4;
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn parse(text: &str) -> Result<Option<Shadow>> {
-        let t: toml::Table = toml::from_str(text).map_err(|e| anyhow::anyhow!("{e}"))?;
-        shadow("lights[0].shadow", t.get("shadow"), false)
-    }
-
-    #[test]
-    fn true_false_and_a_table() {
-        assert_eq!(parse("shadow = false").unwrap(), None);
-        assert_eq!(parse("shadow = true").unwrap(), Some(Shadow::default()));
-        let s = parse("shadow = { resolution = 512, pcf = \"5x5\", cull_front = true }")
-            .unwrap()
-            .unwrap();
-        assert_eq!((s.resolution, s.pcf, s.cull_front), (512, Pcf::Box5, true));
-        assert_eq!(s.bias, Shadow::default().bias);
-    }
-
-    #[test]
-    fn bad_values_name_their_key() {
-        for (text, key) in [
-            (
-                "shadow = { resolution = 1000 }",
-                "lights[0].shadow.resolution",
-            ),
-            ("shadow = { bias = -1.0 }", "lights[0].shadow.bias"),
-            (
-                "shadow = { slope_bias = nan }",
-                "lights[0].shadow.slope_bias",
-            ),
-            ("shadow = { pcf = \"7x7\" }", "lights[0].shadow.pcf"),
-            ("shadow = { fit = \"tight\" }", "lights[0].shadow.fit"),
-            ("shadow = { cube = \"one\" }", "lights[0].shadow.cube"),
-            (
-                "shadow = { size = 512 }",
-                "lights[0].shadow: unknown field `size`",
-            ),
-            (
-                "shadow = 1",
-                "lights[0].shadow: expected true, false or a table",
-            ),
-        ] {
-            let e = parse(text).unwrap_err().to_string();
-            assert!(e.contains(key), "{text}: {e}");
-        }
-    }
-
-    #[test]
-    fn the_saved_table_reads_back_the_same() {
-        let s = Shadow {
-            resolution: 256,
-            bias: 0.25,
-            slope_bias: 3.0,
-            normal_offset: 0.5,
-            cull_front: true,
-            pcf: Pcf::Poisson,
-            fit: ShadowFit::Scene,
-            cube: CubeRender::GeometryShader,
-        };
-        let text = format!("shadow = {}", toml::Value::Table(shadow_table(&s)));
-        assert_eq!(parse(&text).unwrap(), Some(s));
-    }
-}
+mod tests;

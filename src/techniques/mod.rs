@@ -31,6 +31,8 @@ pub static ALL: &[&Technique] = &[
     // First: every later pass draws the skinned meshes it poses.
     &animation::skinned_meshes::SKINNED_MESHES,
     &shadows::shadow_map::SHADOW_MAP,
+    // A directional light's map split into cascades (shadow.cascades > 1).
+    &shadows::cascaded_shadow_maps::CASCADED_SHADOW_MAPS,
     // Before the views too: the [sky] into the environment cube map.
     &sky::sky_cube_map::SKY_CUBE_MAP,
     // The skybox before the opaque world (render.sky_first, for comparison).

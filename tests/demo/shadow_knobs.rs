@@ -100,3 +100,40 @@ fn a_fifth_casting_light_is_refused_with_a_message() {
     assert!(loader.contains(&e), "{loader}\n{e}");
     assert!(too_many_casters(&scene.lights).is_none());
 }
+
+#[test]
+fn a_directional_lights_cascade_knobs_reach_the_plan_and_the_maps() {
+    let ctx = common::context(common::backend());
+    let mut scene = common::scene("cascaded-shadows.toml");
+    let mut r = Renderer::new(&ctx.gl, &ctx.debug, &scene, &Sources::Embedded, 64, 36).unwrap();
+    let cascades = |r: &Renderer| {
+        let p = r.plan.passes.iter();
+        p.filter(|p| p.name == "cascaded shadow map").count()
+    };
+    assert_eq!((cascades(&r), shadow_passes(&r).len()), (4, 0));
+    assert_eq!(r.shadows().maps[0].1.target, glow::TEXTURE_2D_ARRAY);
+    let mut d = Driver::new();
+    d.click(&input(&scene, &r), "Lights (1)");
+    d.click(&input(&scene, &r), "light 0: directional");
+    for label in [
+        "cascades",
+        "split",
+        "stable cascades (texel-snapped)",
+        "blend band",
+    ] {
+        assert!(d.find(&input(&scene, &r), label).is_some(), "{label}");
+    }
+    // The debug colouring, from its checkbox.
+    let edited = lights(d.click(&input(&scene, &r), "cascade colours"));
+    assert!(edited[0].shadow.unwrap().cascade_colors);
+    scene.lights = edited;
+    r.set_scene_values(&scene).unwrap();
+    r.render(&scene.camera).unwrap();
+    // One cascade is the single map again: its pass and a 2D texture.
+    scene.lights[0].shadow.as_mut().unwrap().cascades = 1;
+    r.set_scene_values(&scene).unwrap();
+    r.render(&scene.camera).unwrap();
+    assert_eq!((cascades(&r), shadow_passes(&r).len()), (0, 1));
+    assert_eq!(r.shadows().maps[0].1.target, glow::TEXTURE_2D);
+    ctx.debug.check(&ctx.gl, "the cascade knobs").unwrap();
+}

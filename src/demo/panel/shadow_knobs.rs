@@ -10,8 +10,8 @@
 //! refused with a message, and so is a casting light's change of type into
 //! a full group.
 
-use crate::scene::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D, RESOLUTIONS};
-use crate::scene::{CubeRender, Light, LightKind, Pcf, Shadow, ShadowFit};
+use crate::scene::shadows::{MAX_CASCADES, MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D, RESOLUTIONS};
+use crate::scene::{CascadeSplit, CubeRender, Light, LightKind, Pcf, Shadow, ShadowFit};
 
 /// The colour of the refusal message (the panel's error colour).
 const REFUSED: egui::Color32 = egui::Color32::from_rgb(255, 110, 90);
@@ -108,11 +108,58 @@ pub fn show(ui: &mut egui::Ui, i: usize, l: &mut Light, before: &[Light]) -> boo
     if kind == LightKind::Directional {
         let (all, name) = (ShadowFit::ALL, ShadowFit::name);
         changed |= combo(ui, ("shadow fit", i), "fit to", &mut s.fit, all, name);
+        changed |= cascades(ui, i, s, before);
     }
     if kind == LightKind::Point {
         let (all, name) = (CubeRender::ALL, CubeRender::name);
         changed |= combo(ui, ("shadow cube", i), "cube faces", &mut s.cube, all, name);
     }
+    changed
+}
+
+/// A directional light's cascades (docs/shadows/cascaded_shadow_maps.md):
+/// the count (1: one map), the split, the practical split's lambda, the
+/// stable fit, the blend band and the cascade colours. Only one light may
+/// cascade (the loader's rule): a second is refused with a message.
+fn cascades(ui: &mut egui::Ui, i: usize, s: &mut Shadow, before: &[Light]) -> bool {
+    let other = (before.iter().enumerate())
+        .any(|(j, l)| j != i && l.shadow.is_some_and(|s| s.cascades > 1));
+    let mut changed = false;
+    ui.horizontal(|ui| {
+        ui.label("cascades");
+        let enabled = !other || s.cascades > 1;
+        let slider = egui::Slider::new(&mut s.cascades, 1..=MAX_CASCADES);
+        changed |= ui.add_enabled(enabled, slider).changed();
+    });
+    if other && s.cascades <= 1 {
+        ui.colored_label(
+            REFUSED,
+            "another directional light cascades already: at most one may",
+        );
+    }
+    // Each layer is a full map: keep to the loader's 512 MiB.
+    while u64::from(s.cascades) * u64::from(s.resolution).pow(2) > 1 << 27 {
+        s.resolution /= 2;
+    }
+    if s.cascades <= 1 {
+        return changed;
+    }
+    let (all, name) = (CascadeSplit::ALL, CascadeSplit::name);
+    changed |= combo(ui, ("cascade split", i), "split", &mut s.split, all, name);
+    if s.split == CascadeSplit::Practical {
+        changed |= ui
+            .add(egui::Slider::new(&mut s.lambda, 0.0..=1.0).text("lambda (log weight)"))
+            .changed();
+    }
+    changed |= ui
+        .checkbox(&mut s.stable, "stable cascades (texel-snapped)")
+        .changed();
+    changed |= ui
+        .add(egui::Slider::new(&mut s.blend, 0.0..=0.5).text("blend band"))
+        .changed();
+    changed |= ui
+        .checkbox(&mut s.cascade_colors, "cascade colours")
+        .changed();
     changed
 }
 

@@ -197,6 +197,7 @@ pub const NAMES: &[(u32, &str, &[&str])] = &[
     (0x8B4A, "GL_MAX_VERTEX_UNIFORM_COMPONENTS", &["GetPName"]),
     (0x8B4D, "GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS", &["GetPName"]),
     (0x8B8C, "GL_SHADING_LANGUAGE_VERSION", &["StringName"]),
+    (0x8C1A, "GL_TEXTURE_2D_ARRAY", &["CopyImageSubDataTarget", "TextureTarget"]),
     (0x8C1C, "GL_TEXTURE_BINDING_1D_ARRAY", &["GetPName"]),
     (0x8C1D, "GL_TEXTURE_BINDING_2D_ARRAY", &["GetPName"]),
     (0x8C2A, "GL_TEXTURE_BUFFER", &["TextureTarget", "CopyBufferSubDataTarget", "BufferTargetARB", "BufferStorageTarget"]),

@@ -62,11 +62,13 @@ pub const SHADOW_MAP: Technique = Technique {
     runs: Runs::BeforeViews,
 };
 
-/// One pass per casting light; none when no light casts.
+/// One pass per casting light; none when no light casts. A light whose
+/// map is split into cascades has cascaded_shadow_maps.rs's passes instead.
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let casting = scene.objects.len() - transparent(scene);
     casters(scene)
         .iter()
+        .filter(|c| !c.cascaded())
         .map(|c| {
             let draws = describe(scene, c, casting);
             Pass::new("shadow map", "shadow map", draws, file!()).about(c.light, c.slot as u32)
@@ -74,7 +76,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         .collect()
 }
 
-fn transparent(scene: &Scene) -> usize {
+pub(super) fn transparent(scene: &Scene) -> usize {
     let t = |o: &&crate::scene::Object| scene.materials[o.material].is_transparent();
     scene.objects.iter().filter(t).count()
 }
@@ -227,7 +229,7 @@ impl RunPasses for ShadowMap {
 /// reaches; notes 01 §6.3), counted in `DrawList::shadow_cull`.
 /// With `cull_front`, a two-sided material (`cull = "none"`: a leaf's
 /// quad) is drawn without culling, so that it casts from either side.
-fn draw_casters(
+pub(super) fn draw_casters(
     gl: &glow::Context,
     p: &Program,
     f: &Frame,

@@ -1,0 +1,171 @@
+//! A directional light's cascades this frame (Engel 2006, "Cascaded Shadow
+//! Maps"; docs/shadows/cascaded_shadow_maps.md): the camera's frustum, cut
+//! at the scene's far side as the visible fit cuts it, split and fitted by
+//! src/math/cascades.rs, and the std140 `Cascades` block that
+//! glsl/shadows/cascaded_shadow_maps.glsl reads.
+
+use super::{CASCADED, LightView};
+use crate::frame::shadows::Caster;
+use crate::gl::Gl;
+use crate::gl::buffer::Buffer;
+use crate::gl::depth_map::DepthMap;
+use crate::math::cascades;
+use crate::math::shadow as matrices;
+use crate::scene::shadows::MAX_CASCADES;
+use crate::scene::{Camera, Shadow};
+use anyhow::{Result, bail};
+use glam::{Vec3, Vec4};
+use glow::HasContext;
+
+/// The uniform-block binding point of the `Cascades` block.
+pub const CASCADES_BINDING: u32 = 3;
+/// The cascades' GL_TEXTURE_2D_ARRAY: past the 16 units every GL 3.3 has
+/// (units 0-15 are taken, 16 and 17 hold the G-buffer's microfacet triple).
+pub const UNIT_CASCADES: u32 = 18;
+/// std140: MAX_CASCADES mat4, MAX_CASCADES vec4 (near, far, texel, 0), then
+/// the camera's eye (w: count) and forward (w: blend band), and the flags
+/// (x: cascade colours).
+const BLOCK_SIZE: usize = MAX_CASCADES as usize * (64 + 16) + 3 * 16;
+
+/// The cascades' view of the world: `visible` are the camera's frustum
+/// corners (near plane first, far plane cut at the scene's far side, as
+/// `visible_corners` makes them), `scene_points` every caster's corners.
+pub(super) fn light_view(
+    direction: Vec3,
+    s: &Shadow,
+    scene_points: &[Vec3],
+    visible: &[Vec3],
+    camera: &Camera,
+) -> Option<LightView> {
+    if visible.len() != 8 {
+        return None;
+    }
+    // View depths of the near and far planes: along the camera's axis (the
+    // depth the lookup measures, `view_depth` in the shader).
+    let forward = (camera.target - camera.eye).try_normalize()?;
+    let depth = |p: Vec3| (p - camera.eye).dot(forward);
+    let (near, far) = (depth(visible[0]), depth(visible[4]));
+    let all = cascades::cascades(
+        direction,
+        visible,
+        (near, far),
+        scene_points,
+        (s.cascades, s.split_lambda(), s.blend),
+        s.resolution,
+        s.stable,
+    )?;
+    Some(LightView {
+        kind: CASCADED,
+        view_projections: all.iter().map(|c| c.view_projection).collect(),
+        near,
+        far,
+        texel: all[0].texel,
+        cascades: all,
+    })
+}
+
+/// The texture units a cascaded map needs against what this GL has.
+pub(super) fn check_units(gl: &Gl) -> Result<()> {
+    let have = unsafe { gl.get_parameter_i32(glow::MAX_TEXTURE_IMAGE_UNITS) };
+    if have <= UNIT_CASCADES as i32 {
+        bail!(
+            "a directional light's cascades (shadow.cascades > 1) are read from texture unit \
+             {UNIT_CASCADES}, but this GL has {have} fragment texture units: set shadow.cascades = 1"
+        );
+    }
+    Ok(())
+}
+
+/// Whether `scene`'s lighting programs read the cascades: a light
+/// cascades, or the general shader (render.specialize off) has the lookup.
+pub(super) fn read_by(scene: &crate::scene::Scene) -> bool {
+    let cascaded = |l: &crate::scene::Light| l.shadow.is_some_and(|s| s.cascades > 1);
+    !scene.render.specialize || scene.lights.iter().any(cascaded)
+}
+
+/// The `Cascades` block and a 1 x 1 x 1 array for the unit when no light
+/// cascades (a program that reads the sampler wants a complete texture).
+/// Bound only when `needed` (`read_by`): other frames' lighting passes
+/// make no call for the cascades.
+pub(super) struct CascadeBlock {
+    ubo: Buffer,
+    pub(super) empty: Option<DepthMap>,
+    pub(super) needed: bool,
+}
+
+impl CascadeBlock {
+    pub(super) fn new(gl: &Gl) -> Result<CascadeBlock> {
+        let ubo = Buffer::new(gl, glow::UNIFORM_BUFFER, BLOCK_SIZE, glow::DYNAMIC_DRAW)?;
+        let empty = match check_units(gl) {
+            Ok(()) => Some(DepthMap::new_array(gl, 1, 1)?),
+            Err(_) => None,
+        };
+        let b = CascadeBlock {
+            ubo,
+            empty,
+            needed: true,
+        };
+        b.ubo.write(&vec![0u8; BLOCK_SIZE]);
+        Ok(b)
+    }
+
+    /// Write this frame's cascades (none: a count of 0).
+    pub(super) fn write(&self, camera: &Camera, cascaded: Option<(&Caster, &LightView)>) {
+        if !self.needed {
+            return;
+        }
+        let mut out = vec![0u8; BLOCK_SIZE];
+        let mut put = |at: usize, v: &[f32]| {
+            for (k, x) in v.iter().enumerate() {
+                out[at + 4 * k..at + 4 * k + 4].copy_from_slice(&x.to_ne_bytes());
+            }
+        };
+        let m = MAX_CASCADES as usize;
+        let forward = (camera.target - camera.eye).normalize_or_zero();
+        let (mut count, mut blend, mut colors) = (0.0, 0.0, 0.0);
+        if let Some((c, v)) = cascaded {
+            for (k, cascade) in v.cascades.iter().enumerate().take(m) {
+                let shadow = matrices::bias() * cascade.view_projection;
+                put(64 * k, &shadow.to_cols_array());
+                let range = Vec4::new(cascade.near, cascade.far, cascade.texel, 0.0);
+                put(64 * m + 16 * k, &range.to_array());
+            }
+            count = v.cascades.len().min(m) as f32;
+            blend = c.shadow.blend;
+            colors = if c.shadow.cascade_colors { 1.0 } else { 0.0 };
+        }
+        let base = 80 * m;
+        put(base, &camera.eye.extend(count).to_array());
+        put(base + 16, &forward.extend(blend).to_array());
+        put(base + 32, &[colors, 0.0, 0.0, 0.0]);
+        self.ubo.write(&out);
+    }
+
+    /// Bind the block and, on the cascades' unit, the empty array (the
+    /// cascaded light's map, bound after, replaces it).
+    pub(super) fn bind(&self, gl: &glow::Context) {
+        if !self.needed {
+            return;
+        }
+        unsafe {
+            if let Some(e) = &self.empty {
+                gl.active_texture(glow::TEXTURE0 + UNIT_CASCADES);
+                gl.bind_texture(glow::TEXTURE_2D_ARRAY, Some(e.texture));
+            }
+            gl.bind_buffer_base(glow::UNIFORM_BUFFER, CASCADES_BINDING, Some(self.ubo.id));
+        }
+    }
+
+    pub(super) fn unbind(&self, gl: &glow::Context) {
+        if !self.needed {
+            return;
+        }
+        unsafe {
+            if self.empty.is_some() {
+                gl.active_texture(glow::TEXTURE0 + UNIT_CASCADES);
+                gl.bind_texture(glow::TEXTURE_2D_ARRAY, None);
+            }
+            gl.bind_buffer_base(glow::UNIFORM_BUFFER, CASCADES_BINDING, None);
+        }
+    }
+}

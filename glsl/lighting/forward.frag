@@ -7,6 +7,7 @@
 #include "common/alpha_test.glsl"
 #include "common/lighting_output.glsl"
 #include "common/environment.glsl"
+#include "common/image_based_lighting.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -36,7 +37,7 @@ void main() {
         frag_color = output_color(kd * (u_ambient + texture(u_light_map, mesh_uv).rgb));
         return;
     }
-    vec3 c = u_ambient * kd;
+    vec3 c = ibl_ambient(u_ambient, N, V, kd, ks, r);   // u_ambient kd without render.ibl
     for (int i = 0; i < u_light_count; ++i) {
 #if VARIANT_SHADOWS
         if (casts_shadow(i)) continue;   // in the loop below

@@ -9,6 +9,7 @@
 pub mod ambient_occlusion;
 pub mod attenuation;
 pub mod bvh;
+pub mod image_based_lighting;
 pub mod microfacet;
 pub mod shadow_reference;
 pub mod static_lighting;

@@ -136,6 +136,8 @@ pub(super) struct RenderFile {
     pub(super) light_maps: bool,
     /// Draw the skybox before the opaque world, depth test off (forward only).
     pub(super) sky_first: bool,
+    /// Image-based lighting as the ambient term (src/frame/image_based_lighting.rs).
+    pub(super) ibl: bool,
     pub(super) gbuffer_encoding: super::material::GBufferEncoding,
 }
 
@@ -179,6 +181,7 @@ impl Default for RenderFile {
             normal_mapping: true,
             light_maps: true,
             sky_first: false,
+            ibl: false,
             gbuffer_encoding: super::material::GBufferEncoding::PlainRgba16f,
         }
     }

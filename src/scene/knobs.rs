@@ -20,7 +20,7 @@ pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
     STENCIL_VOLUMES, TILE_SIZE,
 };
-pub use sky::SKY_FIRST;
+pub use sky::{IBL, SKY_FIRST};
 pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
 /// What a knob holds.
@@ -361,6 +361,7 @@ pub static ALL: &[&Knob] = &[
     &NORMAL_MAPPING,
     &LIGHT_MAPS,
     &SKY_FIRST,
+    &IBL,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,

@@ -3,6 +3,7 @@
 //! pass drawn last at z = w (or first, for comparison) and the skybox mirror
 //! reflection of the deferred paths.
 
+pub mod image_based_lighting;
 pub mod sky_cube_map;
 pub mod sky_first;
 pub mod skybox;

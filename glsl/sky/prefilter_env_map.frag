@@ -31,7 +31,7 @@ void main() {
             float pdf = d_ggx(N, H, u_alpha) * 0.25;
             float omega_s = 1.0 / (float(n) * pdf);
             float omega_p = 4.0 * MICROFACET_PI / (6.0 * u_source_size * u_source_size);
-            float lod = max(0.5 * log2(omega_s / omega_p) + 1.0, 0.0);
+            float lod = max(0.5 * log2(omega_s / omega_p), 0.0);
             sum += textureLod(u_environment, L, lod).rgb * n_dot_l;
             weight += n_dot_l;
         }

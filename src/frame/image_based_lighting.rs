@@ -42,7 +42,10 @@ impl IblMaps {
     /// The three textures, empty, for an environment of `environment_size` texels a side.
     pub fn new(gl: &Gl, environment_size: i32) -> Result<IblMaps> {
         let irradiance = CubeMap::empty(gl, IRRADIANCE_SIZE)?;
-        let prefiltered = CubeMap::empty(gl, PREFILTERED_SIZE.min(environment_size).max(1))?;
+        // Its own size whatever the environment's: the roughest level keeps
+        // 4 texels a side, which a wide lobe needs.
+        let _ = environment_size;
+        let prefiltered = CubeMap::empty(gl, PREFILTERED_SIZE)?;
         let brdf = Texture::render_target(gl, BRDF_SIZE, BRDF_SIZE, glow::RG16F)?;
         unsafe {
             // Only the levels the precompute fills are read.

@@ -31,12 +31,12 @@ use std::f64::consts::PI;
 pub const IRRADIANCE_SIZE: i32 = 32;
 /// The environment's mip level face side the convolution sums over.
 pub const IRRADIANCE_SOURCE: i32 = 16;
-/// The prefiltered cube map's side at level 0 (at most the environment's).
+/// The prefiltered cube map's side at level 0 (the roughest level, 5, has 4).
 pub const PREFILTERED_SIZE: i32 = 128;
 /// Its mip levels, one roughness each: level k holds sqrt(alpha) = k / (levels - 1).
 pub const PREFILTERED_LEVELS: i32 = 6;
 /// GGX samples per texel of the prefiltered levels past the first.
-pub const PREFILTER_SAMPLES: u32 = 128;
+pub const PREFILTER_SAMPLES: u32 = 512;
 /// The split-sum table's side (n.v across, sqrt(alpha) up).
 pub const BRDF_SIZE: i32 = 64;
 /// GGX samples per texel of the table.

@@ -257,13 +257,11 @@ pub fn split_sum(prefiltered: DVec3, (a, b): (f64, f64), eta: f64, k_s: f64) -> 
 /// Monte Carlo reference of the whole specular integral, k_s times the
 /// integral of L(l) f_s(l, v, n) (n.l) dl with gloss's exact f_s: random GGX
 /// half vectors, each l weighted by f_s (n.l) / pdf(l), pdf(l) = D (n.h) / (4 v.h).
+/// The material is notes 03's triple (alpha, eta, k_s).
 pub fn full_ibl(
     env: &dyn Fn(DVec3) -> DVec3,
-    n: DVec3,
-    v: DVec3,
-    alpha: f64,
-    eta: f64,
-    k_s: f64,
+    (n, v): (DVec3, DVec3),
+    (alpha, eta, k_s): (f64, f64, f64),
     samples: u32,
     seed: u64,
 ) -> DVec3 {

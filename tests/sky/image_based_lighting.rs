@@ -295,7 +295,7 @@ fn the_split_sum_error_against_the_whole_specular_integral() {
         // Facing the eye (N.V > 0.8) and towards the silhouette.
         let (mut sum, mut worst, mut k) = ([0.0; 2], [0.0f64; 2], [0; 2]);
         for &(i, n, v) in pixels.iter().step_by(151) {
-            let want = ibl::full_ibl(&lookup, n, v, alpha, 1.5, 1.0, 20_000, i as u64);
+            let want = ibl::full_ibl(&lookup, (n, v), (alpha, 1.5, 1.0), 20_000, i as u64);
             let pixel = DVec3::new(got[i].into(), got[i + 1].into(), got[i + 2].into());
             let err = relative(pixel, want);
             let band = usize::from(n.dot(v) <= 0.8);

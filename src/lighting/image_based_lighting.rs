@@ -40,7 +40,7 @@ pub const PREFILTER_SAMPLES: u32 = 512;
 /// The split-sum table's side (n.v across, sqrt(alpha) up).
 pub const BRDF_SIZE: i32 = 64;
 /// GGX samples per texel of the table.
-pub const BRDF_SAMPLES: u32 = 512;
+pub const BRDF_SAMPLES: u32 = 1024;
 
 /// The alpha a prefiltered level holds.
 pub fn level_alpha(level: i32) -> f64 {

@@ -15,8 +15,9 @@
 //! stencil test for a reflected view; without one (nothing after the
 //! composite tests depth, `gloss plan` shows it), no depth test and a
 //! shader that writes colour only;
-//! textures on the G-buffer units and unit::LIGHT, unbound after; restores
-//! no depth or stencil test, GL_LESS.
+//! textures on the G-buffer units and unit::LIGHT, unbound after (and, with
+//! render.ibl, image-based lighting's maps with GL_TEXTURE_CUBE_MAP_SEAMLESS
+//! on); restores no depth or stencil test, GL_LESS, no seamless filtering.
 
 use crate::frame::gbuffer;
 use crate::frame::image_based_lighting;

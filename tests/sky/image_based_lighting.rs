@@ -9,10 +9,11 @@ use crate::common;
 use crate::environment_reflection::pixel_ray;
 use glam::DVec3;
 use gloss::gl::cube_map::CubeMap;
+use gloss::gl::program::Sources;
 use gloss::lighting::image_based_lighting as ibl;
 use gloss::lighting::microfacet;
 use gloss::math::cube_map::CubeImage;
-use gloss::renderer::{Output, render_scene};
+use gloss::renderer::{Output, Renderer, render_scene};
 use gloss::scene::Scene;
 
 /// A sphere under the sky, image-based lighting on.
@@ -399,4 +400,49 @@ fn the_maps_are_planned_only_when_the_scene_asks() {
     };
     assert_eq!(count(&on), 3);
     assert_eq!(count(&off), 0);
+}
+
+#[test]
+fn switching_render_ibl_live_gives_the_image_of_the_scene_loaded_with_it() {
+    // The demo's switch: the renderer makes the sky's cube map and the
+    // maps when render.ibl comes on, and drops them when it goes off.
+    let ctx = common::context(common::backend());
+    let on = sky_scene("forward", [0.6, 0.35, -1.0], 0.0, RED_DIELECTRIC);
+    let mut off = on.clone();
+    off.render.ibl = false;
+    let (w, h) = on.render.size;
+    let mut live = Renderer::with_output(
+        &ctx.gl,
+        &ctx.debug,
+        &off,
+        &Sources::Embedded,
+        w as i32,
+        h as i32,
+        Output::Srgb8,
+    )
+    .unwrap();
+    live.render(&off.camera).unwrap();
+    let before = live.read_image();
+    live.set_render_settings(on.render.clone()).unwrap();
+    live.render(&on.camera).unwrap();
+    let after = live.read_image();
+    let fresh = render_scene(&ctx, &on, Output::Srgb8).unwrap().read_image();
+    assert!(
+        after.as_raw() == fresh.as_raw(),
+        "switched on live != loaded with render.ibl"
+    );
+    assert!(
+        before.as_raw() != after.as_raw(),
+        "render.ibl changed nothing"
+    );
+    live.set_render_settings(off.render.clone()).unwrap();
+    live.render(&off.camera).unwrap();
+    assert!(
+        live.read_image().as_raw() == before.as_raw(),
+        "switched off != never on"
+    );
+    assert!(
+        live.draws().environment.ibl.is_none(),
+        "the maps outlive the switch"
+    );
 }

@@ -39,10 +39,9 @@ impl Environment {
             Some(Source::Sky { size }) => Some(CubeMap::empty(gl, *size as i32)?),
         };
         let ibl = match &cube {
-            Some(c) if super::image_based_lighting::wanted(scene) => Some(
-                super::image_based_lighting::IblMaps::new(gl, c.size)
-                    .context("render.ibl's maps")?,
-            ),
+            Some(_) if super::image_based_lighting::wanted(scene) => {
+                Some(super::image_based_lighting::IblMaps::new(gl).context("render.ibl's maps")?)
+            }
             _ => None,
         };
         Ok(Environment {

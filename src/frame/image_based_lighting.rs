@@ -39,12 +39,11 @@ pub fn wanted(scene: &Scene) -> bool {
 }
 
 impl IblMaps {
-    /// The three textures, empty, for an environment of `environment_size` texels a side.
-    pub fn new(gl: &Gl, environment_size: i32) -> Result<IblMaps> {
+    /// The three textures, empty.
+    pub fn new(gl: &Gl) -> Result<IblMaps> {
         let irradiance = CubeMap::empty(gl, IRRADIANCE_SIZE)?;
         // Its own size whatever the environment's: the roughest level keeps
         // 4 texels a side, which a wide lobe needs.
-        let _ = environment_size;
         let prefiltered = CubeMap::empty(gl, PREFILTERED_SIZE)?;
         let brdf = Texture::render_target(gl, BRDF_SIZE, BRDF_SIZE, glow::RG16F)?;
         unsafe {

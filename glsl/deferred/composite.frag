@@ -3,6 +3,8 @@
 // that adds the ambient term to the accumulated light and encodes to sRGB.
 #include "common/gbuffer_read.glsl"
 #include "common/lighting_output.glsl"
+#include "common/image_based_lighting.glsl"
+uniform vec3 u_eye;
 uniform sampler2D u_light;   // the accumulated light (HDR), unit::LIGHT
 uniform bool u_has_light;    // false: the frame has no lights, so no lighting pass ran
 uniform vec3 u_ambient;
@@ -26,7 +28,14 @@ void main() {
         return;
     }
     vec4 albedo = texture(u_gbuffer_albedo, uv);
-    vec3 ambient = u_ambient * albedo.rgb * albedo.a;   // a: the material's occlusion map
+    vec3 kd = albedo.rgb;
+    vec3 ambient = u_ambient * kd;
+    // Image-based lighting (render.ibl): the ambient term from the environment.
+    if (u_has_ibl) {
+        Surface s = read_geometry_texel(ivec2(gl_FragCoord.xy));
+        ambient = ibl_ambient(u_ambient, normalize(s.N), normalize(u_eye - s.P), kd, s.ks, s.r);
+    }
+    ambient *= albedo.a;   // a: the material's occlusion map
     if (u_has_ambient_occlusion) {
         ambient *= texture(u_ambient_occlusion, uv).r;
     }

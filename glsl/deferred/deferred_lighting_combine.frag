@@ -7,6 +7,7 @@
 #include "common/lighting_output.glsl"
 #include "common/normals.glsl"
 #include "common/environment.glsl"
+#include "common/image_based_lighting.glsl"
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/surface_in.glsl"
@@ -37,7 +38,17 @@ void main() {
     }
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 mirrored = environment_reflection(u_reflectivity, N, normalize(u_eye - v_position));
+    vec3 kd = material_diffuse(uv) * surface_color();
     vec3 ks = material_specular() * material_specular_map(uv);
     if (u_pbr && u_has_metal_rough_map) ks = vec3(material_triple(uv).z);
-    frag_color = output_color(material_diffuse(uv) * surface_color() * (ambient + D) + ks * S + mirrored + material_emission(uv));
+    // Image-based lighting (render.ibl) in place of the constant ambient,
+    // occluded alike.
+    if (u_has_ibl) {
+        float ao = u_has_ambient_occlusion
+            ? texture(u_ambient_occlusion, gl_FragCoord.xy / textureSize(u_ambient_occlusion, 0).xy).r : 1.0;
+        ambient = vec3(0.0);
+        mirrored += ao * material_occlusion(uv)
+            * ibl_ambient(u_ambient, N, normalize(u_eye - v_position), kd, ks, material_reflectance());
+    }
+    frag_color = output_color(kd * (ambient + D) + ks * S + mirrored + material_emission(uv));
 }

@@ -7,6 +7,7 @@
 #include "common/alpha_test.glsl"
 #include "common/lighting_output.glsl"
 #include "common/environment.glsl"
+#include "common/image_based_lighting.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -37,7 +38,8 @@ void main() {
         frag_color = output_color(kd * (u_ambient + texture(u_light_map, mesh_uv).rgb) + material_emission(uv));
         return;
     }
-    vec3 c = u_ambient * kd * material_occlusion(uv) + material_emission(uv);
+    // u_ambient kd without render.ibl; the material's occlusion map scales it.
+    vec3 c = ibl_ambient(u_ambient, N, V, kd, ks, r) * material_occlusion(uv) + material_emission(uv);
     for (int i = 0; i < u_light_count; ++i) {
 #if VARIANT_SHADOWS
         if (casts_shadow(i)) continue;   // in the loop below

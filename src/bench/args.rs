@@ -68,6 +68,11 @@ pub struct BenchArgs {
     /// default scene scenes/ambient-occlusion.toml.
     #[arg(long, conflicts_with_all = ["vary", "aa", "filtering"])]
     pub ssao: bool,
+    /// Measure image-based lighting instead (render.ibl): the precompute
+    /// and the per-frame term, and its maps against Monte Carlo references
+    /// (src/bench/ibl.rs); default scene scenes/ibl.toml.
+    #[arg(long, conflicts_with_all = ["vary", "aa", "filtering", "ssao"])]
+    pub ibl: bool,
     /// Measure how each path's frame time grows with the number of lights
     /// (their radii shrunk so that about as many reach each pixel) and with
     /// the number of pixels, instead (src/bench/scaling.rs).

@@ -29,6 +29,7 @@ mod csv;
 pub mod filtering;
 mod floor;
 mod headless;
+mod ibl;
 mod instancing;
 mod overdraw;
 pub mod pareto;
@@ -93,6 +94,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         _ if args.aa => "scenes/antialiasing.toml",
         _ if args.filtering => "scenes/texture-filtering.toml",
         _ if args.ssao => "scenes/ambient-occlusion.toml",
+        _ if args.ibl => "scenes/ibl.toml",
         _ if !args.particles.is_empty() => "scenes/particles.toml",
         _ if !args.skinning.is_empty() => "scenes/skinned-arm.toml",
         _ if !args.instancing.is_empty() => "scenes/instancing.toml",
@@ -110,6 +112,7 @@ pub fn run(args: &BenchArgs, backend: Backend) -> Result<()> {
         _ if args.aa => return aa::run(args, &scene_path, &ctx),
         _ if args.filtering => return filtering::run(args, &scene_path, &ctx),
         _ if args.ssao => return ssao::run(args, &scene_path, &ctx),
+        _ if args.ibl => return ibl::run(args, &scene_path, &ctx),
         _ if args.scaling => return scaling::run(args, &base, &ctx, software),
         _ if !args.particles.is_empty() => return particles::run(args, &base, &ctx),
         _ if !args.skinning.is_empty() => return skinning::run(args, &base, &ctx),

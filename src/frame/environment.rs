@@ -23,6 +23,9 @@ pub struct Environment {
     pub source: Option<Source>,
     /// The sky the cube map holds (None: not drawn yet, or faces).
     pub drawn_for: RefCell<Option<SkySettings>>,
+    /// Image-based lighting's maps, made from the cube map when the scene
+    /// asks (`render.ibl`; src/frame/image_based_lighting.rs).
+    pub ibl: Option<super::image_based_lighting::IblMaps>,
 }
 
 impl Environment {
@@ -35,10 +38,17 @@ impl Environment {
             }
             Some(Source::Sky { size }) => Some(CubeMap::empty(gl, *size as i32)?),
         };
+        let ibl = match &cube {
+            Some(_) if super::image_based_lighting::wanted(scene) => {
+                Some(super::image_based_lighting::IblMaps::new(gl).context("render.ibl's maps")?)
+            }
+            _ => None,
+        };
         Ok(Environment {
             cube,
             source,
             drawn_for: RefCell::new(None),
+            ibl,
         })
     }
 

@@ -31,6 +31,7 @@ pub mod draw_list;
 pub mod draw_textures;
 pub mod environment;
 pub mod gbuffer;
+pub mod image_based_lighting;
 pub mod light_maps;
 pub mod lights;
 pub mod meshes;

@@ -95,6 +95,13 @@ pub mod unit {
     pub const OIT_SECOND: u32 = 5;
     /// A post-chain step reads the previous image (`u_image`).
     pub const POST_INPUT: u32 = 0;
+    /// Image-based lighting's irradiance and prefiltered cube maps and its
+    /// split-sum table (glsl/common/image_based_lighting.glsl), read by the
+    /// forward pass and the composite: past the 16 units GL 3.3 promises
+    /// (src/frame/image_based_lighting.rs checks the GL has them).
+    pub const IBL_IRRADIANCE: u32 = 21;
+    pub const IBL_PREFILTERED: u32 = 22;
+    pub const IBL_BRDF: u32 = 23;
 }
 
 /// The uniform-block binding point of the `Lights` block (glsl/common/lighting.glsl).

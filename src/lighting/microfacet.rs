@@ -252,8 +252,9 @@ pub fn directional_albedo(v: DVec3, alpha: f64, eta: f64, k_s: f64, samples: usi
     albedo_with(v, alpha, k_s, samples, |c| fresnel_dielectric(c, eta))
 }
 
-/// [`directional_albedo`] with any Fresnel term.
-fn albedo_with(
+/// [`directional_albedo`] with any Fresnel term of v.h (image-based
+/// lighting's split-sum table integrates F = 1 - (1 - v.h)^5 and (1 - v.h)^5).
+pub fn albedo_with(
     v: DVec3,
     alpha: f64,
     k_s: f64,

@@ -111,6 +111,7 @@ impl Renderer {
             max_texels(gl),
         )?;
         crate::frame::gbuffer::check_units(gl, scene)?;
+        crate::frame::image_based_lighting::check_units(gl, scene)?;
         let clip = unsafe { gl.get_parameter_i32(glow::MAX_CLIP_DISTANCES) } as usize;
         if scene.clip_planes.len() + 1 > clip {
             anyhow::bail!(
@@ -214,6 +215,15 @@ impl Renderer {
         self.lights = lights;
         self.upload_lights();
         self.draws.update_values(&self.scene);
+        // render.ibl may add the sky's cube map and image-based lighting's maps, or drop them.
+        let environment = &self.draws.environment;
+        if environment.source != self.scene.environment()
+            || environment.ibl.is_some() != crate::frame::image_based_lighting::wanted(&self.scene)
+        {
+            crate::frame::image_based_lighting::check_units(&self.gl, &self.scene)?;
+            self.draws.environment =
+                crate::frame::environment::Environment::new(&self.gl, &self.scene)?;
+        }
         self.debug.check(&self.gl, "changing the scene's values")
     }
 

@@ -162,6 +162,8 @@ pub(super) struct RenderFile {
     pub(super) light_maps: bool,
     /// Draw the skybox before the opaque world, depth test off (forward only).
     pub(super) sky_first: bool,
+    /// Image-based lighting as the ambient term (src/frame/image_based_lighting.rs).
+    pub(super) ibl: bool,
     pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
 }
 
@@ -214,6 +216,7 @@ impl Default for RenderFile {
             parallax_uv: false,
             light_maps: true,
             sky_first: false,
+            ibl: false,
             gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
         }
     }

@@ -26,7 +26,7 @@ pub use lighting::{
     STENCIL_VOLUMES, TILE_SIZE,
 };
 pub use parallax::{PARALLAX, PARALLAX_LAYERS, PARALLAX_SHADOWS, PARALLAX_UV};
-pub use sky::SKY_FIRST;
+pub use sky::{IBL, SKY_FIRST};
 pub use stencil::{OUTLINE_WIDTH, OUTLINES};
 pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
@@ -377,6 +377,7 @@ pub static ALL: &[&Knob] = &[
     &PARALLAX_UV,
     &LIGHT_MAPS,
     &SKY_FIRST,
+    &IBL,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,

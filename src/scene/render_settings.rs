@@ -186,6 +186,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         parallax_uv: r.parallax_uv,
         light_maps: r.light_maps,
         sky_first: r.sky_first,
+        ibl: r.ibl,
         ambient_occlusion: super::ambient_occlusion::resolve(f.ambient_occlusion.as_ref())?,
         gbuffer_encoding: r.gbuffer_encoding,
     })
@@ -294,6 +295,10 @@ pub struct RenderSettings {
     /// Draw the skybox first, before the opaque world, with the depth test
     /// off, instead of last at z = w (notes 03, Implementation; forward only).
     pub sky_first: bool,
+    /// The ambient term from the environment cube map (Karis 2013's
+    /// image-based lighting: irradiance, prefiltered specular, split-sum
+    /// table) instead of the constant `ambient` (src/frame/image_based_lighting.rs).
+    pub ibl: bool,
     /// `[ambient_occlusion]`: SSAO on the G-buffer paths (notes 03, Ambient
     /// Light; src/scene/ambient_occlusion.rs). None: the ambient term unoccluded.
     pub ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusion>,

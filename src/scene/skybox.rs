@@ -97,7 +97,9 @@ impl Scene {
             return Some(e.clone());
         }
         let reflects = self.materials.iter().any(|m| m.reflectivity > 0.0);
-        (reflects && self.sky.is_some()).then_some(Environment::Sky { size: DEFAULT_SIZE })
+        // Image-based lighting lights with the sky's cube map too.
+        ((reflects || self.render.ibl) && self.sky.is_some())
+            .then_some(Environment::Sky { size: DEFAULT_SIZE })
     }
 
     /// Whether the skybox is drawn before the opaque world
@@ -108,6 +110,13 @@ impl Scene {
 
     /// What `[skybox]`, `render.sky_first` and `reflectivity` set to no effect.
     pub(super) fn skybox_warnings(&self, w: &mut Vec<String>) {
+        if self.render.ibl && self.environment().is_none() {
+            w.push(
+                "render.ibl = true has no effect without a [sky] or a [skybox]: there is no \
+                 environment to light with (the constant ambient is used)"
+                    .into(),
+            );
+        }
         if self.render.sky_first && self.skybox.is_none() {
             w.push("render.sky_first = true has no effect without a [skybox]".into());
         } else if self.render.sky_first && self.render.path != RenderPath::Forward {

@@ -35,6 +35,7 @@ pub static ALL: &[&Technique] = &[
     &shadows::cascaded_shadow_maps::CASCADED_SHADOW_MAPS,
     // Before the views too: the [sky] into the environment cube map.
     &sky::sky_cube_map::SKY_CUBE_MAP,
+    &sky::image_based_lighting::IMAGE_BASED_LIGHTING,
     // The skybox before the opaque world (render.sky_first, for comparison).
     &sky::sky_first::SKY_FIRST,
     &lighting::forward::FORWARD,

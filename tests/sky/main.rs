@@ -6,5 +6,6 @@ mod common;
 mod assignment;
 mod bunny;
 mod environment_reflection;
+mod image_based_lighting;
 mod skybox;
 mod sun_sky;

@@ -2,6 +2,19 @@
 
 use super::{Kind, Knob, Value};
 
+pub static IBL: Knob = Knob {
+    key: "render.ibl",
+    label: "image-based lighting",
+    help: "the ambient term from the environment (the [sky]'s cube map or the [skybox]): an irradiance cube map for k_d, a prefiltered cube map and the split-sum table for the microfacet specular (Karis 2013, \"Real Shading in Unreal Engine 4\"), instead of the constant ambient",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.ibl),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.ibl = b;
+        }
+    },
+};
+
 pub static SKY_FIRST: Knob = Knob {
     key: "render.sky_first",
     label: "sky first",

@@ -15,10 +15,12 @@
 //! stencil test for a reflected view; without one (nothing after the
 //! composite tests depth, `gloss plan` shows it), no depth test and a
 //! shader that writes colour only;
-//! textures on the G-buffer units and unit::LIGHT, unbound after; restores
-//! no depth or stencil test, GL_LESS.
+//! textures on the G-buffer units and unit::LIGHT, unbound after (and, with
+//! render.ibl, image-based lighting's maps with GL_TEXTURE_CUBE_MAP_SEAMLESS
+//! on); restores no depth or stencil test, GL_LESS, no seamless filtering.
 
 use crate::frame::gbuffer;
+use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -145,11 +147,19 @@ impl RunPasses for Composite {
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             p.set_vec3("u_ambient", f.scene.render.ambient);
             super::ambient_light::bind_result(f, p);
+            // Image-based lighting's maps: the ambient term with render.ibl.
+            let ibl = f.draws.environment.ibl.as_ref();
+            if ibl.is_some() {
+                gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+            }
+            image_based_lighting::bind(gl, p, ibl);
             p.set_vec3("u_background", f.scene.render.background);
             p.set_bool("u_output_srgb", u.output_srgb);
             f.meshes.fullscreen.draw();
 
             super::ambient_light::unbind_result(gl);
+            image_based_lighting::unbind(gl, ibl);
+            gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);

@@ -18,6 +18,7 @@
 use crate::frame::draw_list::DrawList;
 use crate::frame::environment::Environment;
 use crate::frame::gbuffer;
+use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -224,6 +225,7 @@ impl DeferredLighting {
             p.set_vec3("u_eye", u.eye);
             gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             f.draws.environment.bind(gl, p);
+            image_based_lighting::bind(gl, p, f.draws.environment.ibl.as_ref());
             f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[0].id));
@@ -264,6 +266,7 @@ impl DeferredLighting {
             gl.bind_texture(glow::TEXTURE_2D, None);
             super::ambient_light::unbind_result(gl);
             Environment::unbind(gl);
+            image_based_lighting::unbind(gl, f.draws.environment.ibl.as_ref());
             gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             for u in [unit::LIGHT, unit::SPECULAR_LIGHT] {
                 gl.active_texture(glow::TEXTURE0 + u);

@@ -23,6 +23,7 @@
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::environment::Environment;
+use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -203,6 +204,8 @@ impl RunPasses for Forward {
             // Implementation), filtered across the cube map's faces.
             gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             f.draws.environment.bind(gl, p);
+            // Image-based lighting's maps, the ambient term with render.ibl.
+            image_based_lighting::bind(gl, p, f.draws.environment.ibl.as_ref());
             // Texture coordinates and vertex colours perspective-correct or
             // affine (notes 01 §4.1, §5.1).
             let affine = f.scene.render.interpolation == Interpolation::Affine;
@@ -257,6 +260,7 @@ impl RunPasses for Forward {
             gl.front_face(glow::CCW);
             DrawList::unbind_textures(gl);
             Environment::unbind(gl);
+            image_based_lighting::unbind(gl, f.draws.environment.ibl.as_ref());
             gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);

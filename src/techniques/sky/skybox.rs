@@ -39,7 +39,8 @@ pub const SKYBOX: Technique = Technique {
     shaders: &["sky/skybox.vert", "sky/skybox.frag"],
     scene: "scenes/skybox.toml",
     docs: "docs/sky/skybox.md",
-    knobs: &[&knobs::SKY_FIRST],
+    // And the switch of image-based lighting, which lights with the skybox.
+    knobs: &[&knobs::SKY_FIRST, &knobs::IBL],
     passes,
     targets,
     create,

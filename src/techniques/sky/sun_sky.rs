@@ -22,8 +22,8 @@ use crate::frame::post::world_target;
 use crate::frame::targets::TargetDesc;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
-use crate::scene::Scene;
 use crate::scene::sky::SUN_ANGULAR_RADIUS;
+use crate::scene::{Scene, knobs};
 use anyhow::Result;
 use glam::Vec3;
 use glow::HasContext;
@@ -35,7 +35,8 @@ pub const SUN_SKY: Technique = Technique {
     shaders: &["sky/sun_sky.vert", "sky/sun_sky.frag"],
     scene: "scenes/sun-sky.toml",
     docs: "docs/sky/sun_sky.md",
-    knobs: &[],
+    // Image-based lighting lights with this sky: its switch is shown here.
+    knobs: &[&knobs::IBL],
     passes,
     targets,
     create,

@@ -31,6 +31,9 @@ pub struct BenchRow {
     pub max_abs: f64,
     /// Percentage (`0..=100`) of pixels with any channel off by more than 1/255.
     pub pct_over_1: f64,
+    /// Mean FLIP error against the reference (src/image_compare/flip.rs),
+    /// where one was measured.
+    pub flip: Option<f64>,
     /// The far field's analytic error bound (src/bench/bound.rs), where the
     /// setting has one.
     pub bound: Option<super::bound::FrameBound>,
@@ -137,6 +140,10 @@ pub fn table(rows: &[BenchRow]) -> String {
     for h in ["speed-up", "RMSE×255", "max×255", "% >1/255"] {
         header.push((h.into(), true));
     }
+    let any_flip = rows.iter().any(|r| r.flip.is_some());
+    if any_flip {
+        header.push(("FLIP".into(), true));
+    }
     let any_fragments = rows.iter().any(|r| r.fragments_per_pixel.is_some());
     if any_fragments {
         header.push(("frags/px".into(), true));
@@ -187,6 +194,9 @@ pub fn table(rows: &[BenchRow]) -> String {
             cells.push(num(r.rmse * 255.0, 3));
             cells.push(num(r.max_abs * 255.0, 1));
             cells.push(num(r.pct_over_1, 3));
+            if any_flip {
+                cells.push(r.flip.map_or_else(|| DASH.into(), |f| num(f, 4)));
+            }
             if any_fragments {
                 cells.push(
                     r.fragments_per_pixel
@@ -281,6 +291,7 @@ pub(super) mod tests {
             rmse,
             max_abs: rmse * 4.0,
             pct_over_1: rmse * 1000.0,
+            flip: Some(rmse * 2.0),
             bound: None,
             fragments_per_pixel: None,
             shadow: None,
@@ -347,6 +358,7 @@ pub(super) mod tests {
             "RMSE×255",
             "max×255",
             "% >1/255",
+            "FLIP",
             "clock",
         ] {
             assert!(lines[0].contains(h), "header lacks {h}: {}", lines[0]);
@@ -365,6 +377,7 @@ pub(super) mod tests {
             "0.510",
             "2.0",
             "2.000",
+            "0.0040",
             "GL_TIME_ELAPSED",
         ] {
             assert!(vol.contains(v), "row lacks {v}: {vol}");

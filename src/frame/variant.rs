@@ -55,6 +55,10 @@ pub struct LightingVariant {
     /// (src/frame/gbuffer.rs `material_code`): a compile-time constant for
     /// the lighting passes that read it, instead of `u_gbuffer_material`.
     pub gbuffer_material: i32,
+    /// Tiled shading and the far field read the lights from the `Lights`
+    /// uniform block (every light fits in it on every GL, and
+    /// `render.light_block` is on) rather than from the buffer texture.
+    pub light_block: bool,
 }
 
 impl LightingVariant {
@@ -73,6 +77,7 @@ impl LightingVariant {
         pcf_poisson: true,
         normal_maps: true,
         gbuffer_material: -1,
+        light_block: false,
     };
 
     /// The parts `scene` needs, or `GENERAL` with `render.specialize` off.
@@ -107,6 +112,8 @@ impl LightingVariant {
             normal_maps: scene.render.normal_mapping
                 && (scene.objects.iter()).any(|o| scene.materials[o.material].normal_map.is_some()),
             gbuffer_material: material,
+            light_block: scene.render.light_block
+                && scene.lights.len() <= crate::frame::lights::LIGHTS_ON_EVERY_GL,
         }
     }
 
@@ -135,6 +142,7 @@ impl LightingVariant {
                 "VARIANT_GBUFFER_MATERIAL",
                 self.gbuffer_material.to_string(),
             ),
+            ("VARIANT_LIGHT_BLOCK", b(self.light_block)),
         ]
     }
 
@@ -199,6 +207,9 @@ impl LightingVariant {
             gbuffer::material_code::PLAIN => extra.push_str(", plain G-buffer triple"),
             gbuffer::material_code::REPORT => extra.push_str(", report's G-buffer triple"),
             _ => {}
+        }
+        if self.light_block {
+            extra.push_str(", lights from the uniform block");
         }
         format!("{types}, {falloff}, {shadows}, {model}{extra}")
     }

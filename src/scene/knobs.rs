@@ -290,7 +290,7 @@ pub static SPECIALIZE: Knob = Knob {
 pub static LIGHT_BLOCK: Knob = Knob {
     key: "render.light_block",
     label: "lights from the uniform block",
-    help: "with specialised shaders, tiled shading and the far field read the lights from the uniform block when all of them fit on every GL (256); off: from the buffer texture (src/frame/variant.rs)",
+    help: "with specialised shaders, tiled shading and the far field read the lights from the uniform block when all of them fit on every GL (256); off (the default: on llvmpipe the two measured the same): from the buffer texture (src/frame/variant.rs)",
     kind: Kind::Bool,
     get: |r| Value::Bool(r.light_block),
     set: |r, v| {

@@ -228,7 +228,8 @@ pub struct RenderSettings {
     pub specialize: bool,
     /// With `specialize`: tiled shading and the far field read the lights
     /// from the `Lights` uniform block when every light fits in it on every
-    /// GL (256), instead of the buffer texture (src/frame/variant.rs).
+    /// GL (256), instead of the buffer texture (src/frame/variant.rs). Off
+    /// by default: on llvmpipe the two measured the same.
     pub light_block: bool,
     /// How the post chain passes its image along (src/scene/post.rs).
     pub post_chain: super::post::ChainForm,

@@ -126,6 +126,16 @@ fn the_other_paths_give_the_general_image_and_name_their_variant() {
     let s = small("far-field.toml");
     assert!(s.render.far_field > 0 && s.render.path == RenderPath::Tiled);
     same_as_general(&ctx, "far-field", &s, "far field");
+    // The lights read from the uniform block instead of the buffer texture
+    // (render.light_block), by tiled shading and the far field.
+    let mut block = s.clone();
+    block.render.light_block = true;
+    assert!(variant(&block).light_block && !variant(&s).light_block);
+    same_as_general(&ctx, "far-field-light-block", &block, "far field");
+    same_as_general(&ctx, "far-field-light-block-tiled", &block, "lighting");
+    let mut mixed = with_path(&small("mixed-lights.toml"), RenderPath::Tiled);
+    mixed.render.light_block = true;
+    same_as_general(&ctx, "mixed-tiled-light-block", &mixed, "lighting");
 }
 
 #[test]

@@ -248,8 +248,19 @@ fn bench_scaling_measures_lights_and_pixels() {
     let reach: Vec<f64> = rows.iter().map(|c| c[2].parse().unwrap()).collect();
     assert!(reach.iter().all(|&r| r > 1.0), "{reach:?}\n{stdout}");
     assert!(rows[4].join(" ").contains("uniform block"), "{stdout}");
-    let tiled: f64 = rows[4].last().unwrap().parse().unwrap();
+    // The tiled cell: frame ms, then in brackets ns per light and pixel,
+    // the frame over 4096 lights x 64 x 36 pixels.
+    let n = rows[4].len();
+    let tiled: f64 = rows[4][n - 2].parse().unwrap();
     assert!(tiled > 0.0, "{stdout}");
+    let ns: f64 = (rows[4][n - 1].trim_matches(|c| c == '(' || c == ')'))
+        .parse()
+        .unwrap();
+    let expect = tiled * 1e6 / (4096.0 * 64.0 * 36.0);
+    assert!(
+        (ns - expect).abs() <= 5e-4 + expect * 1e-3,
+        "{ns} {expect}\n{stdout}"
+    );
     // Four frame sizes, half to twice the measured one.
     for size in ["32x18", "64x36", "96x54", "128x72"] {
         assert!(

@@ -9,6 +9,11 @@ uniform vec4 u_uv_transform;      // the material's uv scale.xy, offset.zw
 uniform float u_normal_scale;     // the map's strength: its x and y are scaled (1: as stored)
 
 vec3 bumped_normal(vec3 N, vec2 uv) {
+#ifdef VARIANT_NORMAL_MAPS
+#if !VARIANT_NORMAL_MAPS
+    return N;   // a lighting variant whose frame has no normal map (src/frame/variant.rs)
+#endif
+#endif
     if (!u_has_normal_map) return N;
     // The interpolated tangent, made perpendicular to N again (Gram-Schmidt).
     vec3 T = v_tangent.xyz - N * dot(N, v_tangent.xyz);

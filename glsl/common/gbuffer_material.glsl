@@ -16,6 +16,13 @@
 #define GBUFFER_MATERIAL_PLAIN 2
 
 uniform int u_gbuffer_material;
+// A lighting variant (src/frame/variant.rs) knows the encoding when it is
+// built: a constant, whose branches the compiler drops.
+#ifdef VARIANT_GBUFFER_MATERIAL
+#define GBUFFER_MATERIAL VARIANT_GBUFFER_MATERIAL
+#else
+#define GBUFFER_MATERIAL u_gbuffer_material
+#endif
 
 // The report's encoding of one value: (stored, convert flag).
 vec2 encode_report(float v) {
@@ -45,12 +52,12 @@ void encode_material(vec3 t, bool microfacet, out vec4 g_alpha, out vec4 g_conve
 // Reading (a lighting pass, after common/gbuffer_read.glsl's samplers):
 // whether the texel is microfacet, and its triple.
 bool decode_material(vec4 g_alpha, vec4 g_convert, out vec3 t) {
-    if (u_gbuffer_material == GBUFFER_MATERIAL_REPORT) {
+    if (GBUFFER_MATERIAL == GBUFFER_MATERIAL_REPORT) {
         t = vec3(decode_report(g_alpha.x, g_convert.x),
                  decode_report(g_alpha.y, g_convert.y),
                  decode_report(g_alpha.z, g_convert.z));
         return g_convert.w > 0.5;
     }
     t = g_alpha.xyz;
-    return u_gbuffer_material == GBUFFER_MATERIAL_PLAIN && g_alpha.w > 0.5;
+    return GBUFFER_MATERIAL == GBUFFER_MATERIAL_PLAIN && g_alpha.w > 0.5;
 }

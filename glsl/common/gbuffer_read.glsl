@@ -29,10 +29,10 @@ struct Surface {
 // G-buffer has them; sets ks to k_s for a microfacet pixel.
 void read_reflectance(ivec2 texel, inout Surface s) {
     s.r = Reflectance(false, s.shininess, 1.0, 1.0);
-    if (u_gbuffer_material == GBUFFER_MATERIAL_NONE) {
+    if (GBUFFER_MATERIAL == GBUFFER_MATERIAL_NONE) {
         return;
     }
-    vec4 convert = u_gbuffer_material == GBUFFER_MATERIAL_REPORT
+    vec4 convert = GBUFFER_MATERIAL == GBUFFER_MATERIAL_REPORT
         ? texelFetch(u_gbuffer_convert, texel, 0) : vec4(0.0);
     vec3 t;
     s.r.microfacet = decode_material(texelFetch(u_gbuffer_alpha, texel, 0), convert, t);

@@ -5,6 +5,14 @@
 uniform samplerBuffer u_light_data;
 
 Light light_at(int i) {
+#ifdef VARIANT_LIGHT_BLOCK
+#if VARIANT_LIGHT_BLOCK
+    // A lighting variant whose lights all fit in the Lights block reads them
+    // there: a plain load, where a texelFetch goes through the sampler
+    // (src/frame/variant.rs, render.light_block).
+    return u_lights[i];
+#endif
+#endif
     Light l;
     l.position_type = texelFetch(u_light_data, 4 * i);
     l.direction_radius = texelFetch(u_light_data, 4 * i + 1);

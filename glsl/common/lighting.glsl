@@ -44,6 +44,14 @@
 #define VARIANT_LINEAR 1
 #define VARIANT_SHADOWS 1
 #define VARIANT_MICROFACET 1
+// common/shadow.glsl: how many 2D and cube maps, which filter loops;
+// common/bump_mapping.glsl: normal maps. (VARIANT_GBUFFER_MATERIAL stays
+// undefined: common/gbuffer_material.glsl then reads u_gbuffer_material.)
+#define VARIANT_SHADOW_2D 4
+#define VARIANT_SHADOW_CUBE 4
+#define VARIANT_PCF_BOX 1
+#define VARIANT_PCF_POISSON 1
+#define VARIANT_NORMAL_MAPS 1
 #endif
 
 // std140, 64 bytes a light (src/lighting.rs writes this layout).

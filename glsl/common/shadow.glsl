@@ -70,16 +70,22 @@ const vec2 POISSON[16] = vec2[](
 float pcf_2d(sampler2DShadow map, vec3 c, int kernel, float texel) {
     if (kernel == PCF_NONE || kernel == PCF_HARDWARE) return texture(map, c);
     float sum = 0.0;
+#if VARIANT_PCF_POISSON
     if (kernel == PCF_POISSON) {
         for (int i = 0; i < 16; ++i)
             sum += texture(map, vec3(c.xy + POISSON[i] * 2.5 * texel, c.z));
         return sum / 16.0;
     }
+#endif
+#if VARIANT_PCF_BOX
     int r = kernel == PCF_3X3 ? 1 : 2;
     for (int y = -r; y <= r; ++y)
         for (int x = -r; x <= r; ++x)
             sum += texture(map, vec3(c.xy + vec2(x, y) * texel, c.z));
     return sum / float((2 * r + 1) * (2 * r + 1));
+#else
+    return texture(map, c);   // not reached: the frame has no box filter
+#endif
 }
 
 // The same on a cube face: offsets across the face that d points into;
@@ -92,6 +98,7 @@ float pcf_cube(samplerCubeShadow map, vec3 d, float ref, int kernel, float texel
     vec3 v = a.z == major ? vec3(0, 1, 0) : vec3(0, 0, 1);
     float step = texel * major;
     float sum = 0.0;
+#if VARIANT_PCF_POISSON
     if (kernel == PCF_POISSON) {
         for (int i = 0; i < 16; ++i) {
             vec2 o = POISSON[i] * 2.5 * step;
@@ -99,25 +106,52 @@ float pcf_cube(samplerCubeShadow map, vec3 d, float ref, int kernel, float texel
         }
         return sum / 16.0;
     }
+#endif
+#if VARIANT_PCF_BOX
     int r = kernel == PCF_3X3 ? 1 : 2;
     for (int y = -r; y <= r; ++y)
         for (int x = -r; x <= r; ++x)
             sum += texture(map, vec4(d + (float(x) * u + float(y) * v) * step, ref));
     return sum / float((2 * r + 1) * (2 * r + 1));
+#else
+    return texture(map, vec4(d, ref));   // not reached: the frame has no box filter
+#endif
 }
 
+// A lighting variant (src/frame/variant.rs) keeps only the slots its frame
+// fills: VARIANT_SHADOW_2D and VARIANT_SHADOW_CUBE maps, from slot 0 on.
 float shadow_2d(int i, vec3 c, int kernel, float texel) {
+#if VARIANT_SHADOW_2D == 0
+    return 1.0;
+#else
+#if VARIANT_SHADOW_2D > 1
     if (i == 0) return pcf_2d(u_shadow_map[0], c, kernel, texel);
+#endif
+#if VARIANT_SHADOW_2D > 2
     if (i == 1) return pcf_2d(u_shadow_map[1], c, kernel, texel);
+#endif
+#if VARIANT_SHADOW_2D > 3
     if (i == 2) return pcf_2d(u_shadow_map[2], c, kernel, texel);
-    return pcf_2d(u_shadow_map[3], c, kernel, texel);
+#endif
+    return pcf_2d(u_shadow_map[VARIANT_SHADOW_2D - 1], c, kernel, texel);
+#endif
 }
 
 float shadow_cube(int i, vec3 d, float ref, int kernel, float texel) {
+#if VARIANT_SHADOW_CUBE == 0
+    return 1.0;
+#else
+#if VARIANT_SHADOW_CUBE > 1
     if (i == 0) return pcf_cube(u_shadow_cube[0], d, ref, kernel, texel);
+#endif
+#if VARIANT_SHADOW_CUBE > 2
     if (i == 1) return pcf_cube(u_shadow_cube[1], d, ref, kernel, texel);
+#endif
+#if VARIANT_SHADOW_CUBE > 3
     if (i == 2) return pcf_cube(u_shadow_cube[2], d, ref, kernel, texel);
-    return pcf_cube(u_shadow_cube[3], d, ref, kernel, texel);
+#endif
+    return pcf_cube(u_shadow_cube[VARIANT_SHADOW_CUBE - 1], d, ref, kernel, texel);
+#endif
 }
 
 // A directional light's cascades (cascaded_shadow).

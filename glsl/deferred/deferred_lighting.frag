@@ -19,7 +19,11 @@ void main() {
     vec3 d, s;
     surface_light(light, g.P, g.N, normalize(u_eye - g.P), g.r, d, s);
     // Shadow mapping's second pass (notes 01 §8.5) scales both lights.
+#if VARIANT_SHADOWS
     float lit = shadow_visibility(u_light_id, g.P, g.N);
+#else
+    float lit = 1.0;   // no light casts in this frame (src/frame/variant.rs)
+#endif
     diffuse_light = vec4(lit * d, 1.0);
     specular_light = vec4(lit * s, 1.0);
 }

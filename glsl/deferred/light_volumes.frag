@@ -19,6 +19,10 @@ void main() {
     if (radius >= 0.0 && distance(s.P, light.position_type.xyz) > radius) discard;
     vec3 V = normalize(u_eye - s.P);
     // The volume shader samples the light's shadow map (notes 01 §8.5).
+#if VARIANT_SHADOWS
     float lit = shadow_visibility(u_light_id, s.P, s.N);
+#else
+    float lit = 1.0;   // no light casts in this frame (src/frame/variant.rs)
+#endif
     light_out = vec4(lit * surface_shade(light, s.P, s.N, V, s.kd, s.ks, s.r), 1.0);
 }

@@ -61,6 +61,7 @@ pub fn csv(rows: &[BenchRow]) -> String {
         "rmse_x255",
         "max_abs_x255",
         "pct_over_1",
+        "flip_mean",
         "fragments_per_pixel",
         "bound_max_x255",
         "bound_pct_over_1",
@@ -111,6 +112,7 @@ pub fn csv(rows: &[BenchRow]) -> String {
         c.push(csv_num(r.rmse * 255.0));
         c.push(csv_num(r.max_abs * 255.0));
         c.push(csv_num(r.pct_over_1));
+        c.push(r.flip.map_or_else(String::new, csv_num));
         c.push(r.fragments_per_pixel.map_or_else(String::new, csv_num));
         let b = r.bound.as_ref();
         c.push(b.map_or_else(String::new, |b| csv_num(b.max * 255.0)));
@@ -168,6 +170,7 @@ mod tests {
         assert_eq!(col("pass_forward_median_ms"), "");
         assert_eq!(col("speedup_vs_forward"), "12");
         assert_eq!(col("rmse"), "0.002");
+        assert_eq!(col("flip_mean"), "0.004");
         // Quoting.
         let mut q = r[..1].to_vec();
         q[0].setting = "a, \"b\"".into();

@@ -3,7 +3,8 @@
 //! For each setting (render path x light count x cutoff) it renders the same
 //! frame many times after a warm-up and reports the median and spread of the
 //! frame time and of each pass, and the error of the setting's image against
-//! the reference: forward rendering, which has no cutoff.
+//! the reference: forward rendering, which has no cutoff. The error is RMSE,
+//! max and, beside them, the mean FLIP (a perceptual error, src/image_compare/flip.rs).
 //!
 //! Clocks: on llvmpipe, GL_TIME_ELAPSED under-reports (rasterisation is
 //! deferred until the driver flushes), so every figure here is the CPU clock
@@ -342,6 +343,10 @@ fn measure(
         Some(reference) => compare_rgba8(&image, reference, 1.0 / 255.0)?,
         None => crate::image_compare::Metrics::incomparable(1.0 / 255.0),
     };
+    let flip = match reference {
+        Some(reference) => Some(crate::image_compare::flip::flip(&image, reference)?.mean),
+        None => None,
+    };
     drop(r);
     let bound = bound::far_field(ctx, scene, &image)?;
     Ok(BenchRow {
@@ -359,6 +364,7 @@ fn measure(
         rmse: m.rmse,
         max_abs: m.max_abs,
         pct_over_1: m.frac_over * 100.0,
+        flip,
         bound,
         fragments_per_pixel: Some(fragments),
         ..row

@@ -161,7 +161,7 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless, software: bool
         .map(|(label, ..)| ScalingSeries::new(label))
         .collect();
     let mut table = format!(
-        "frame ms against light count at {}x{} (radius shrinks as 1/sqrt(count); reach: lights that reach a pixel, mean; listed: lights in a tiled cluster's list, mean)\n{:>7} {:>8} {:>7} {:>8}",
+        "frame ms against light count at {}x{} (radius shrinks as 1/sqrt(count); reach: lights that reach a pixel, mean; listed: lights in a tiled cluster's list, mean; in brackets: the frame's ns per light and pixel)\n{:>7} {:>8} {:>7} {:>8}",
         size.0, size.1, "lights", "radius", "reach", "listed"
     );
     for (label, ..) in PATHS {
@@ -183,7 +183,8 @@ pub(super) fn run(args: &BenchArgs, base: &Scene, ctx: &Headless, software: bool
             let what = format!("{label}, {n} lights");
             let ms = time(ctx, software, args, &on_path(&scene, path, single), &what)?;
             by_lights[k].points.push((n as f64, ms));
-            table.push_str(&format!(" {ms:>21.2}"));
+            let ns = ms * 1e6 / (n as f64 * f64::from(size.0) * f64::from(size.1));
+            table.push_str(&format!(" {:>21}", format!("{ms:.2} ({ns:.3})")));
         }
     }
 

@@ -11,8 +11,16 @@
 //! of settings that changes the variant builds or reuses the other set).
 //! `render.specialize = false` gives the general shader, which is also what
 //! a program built without these defines compiles.
+//!
+//! Besides the lights and the materials, the switches cover the shadow
+//! lookup (how many maps of each kind, which filters: glsl/common/shadow.glsl
+//! keeps one inlined copy of its filter per sampler, so a frame with one 2D
+//! map drops seven), the normal maps and the G-buffer's material encoding.
 
+use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
+use crate::frame::shadows;
+use crate::scene::shadows::Pcf;
 use crate::scene::{Falloff, LightKind, Scene};
 
 /// What one lighting variant evaluates. `GENERAL` is everything.
@@ -33,6 +41,26 @@ pub struct LightingVariant {
     /// gAlpha; any: the forward pass shades it), so a pixel may need notes
     /// 03's BRDF rather than Phong's lobe.
     pub microfacet: bool,
+    /// How many 2D shadow maps (directional and spot casters, 0-4) and
+    /// cube maps (point casters, 0-4) the frame has: the lookup keeps one
+    /// copy of its filter per map the frame has, none for a kind it lacks.
+    pub shadow_maps_2d: u8,
+    pub shadow_cubes: u8,
+    /// Some caster filters with a 3x3 or 5x5 box, or the Poisson disc
+    /// (`shadow.pcf`): the filter loops (none and hardware are one lookup).
+    pub pcf_box: bool,
+    pub pcf_poisson: bool,
+    /// Some object's material has a normal map and `render.normal_mapping`
+    /// is on: the forward pass reads it (the G-buffer pass is not a variant).
+    pub normal_maps: bool,
+    /// How the G-buffer holds the microfacet triple
+    /// (src/frame/gbuffer.rs `material_code`): a compile-time constant for
+    /// the lighting passes that read it, instead of `u_gbuffer_material`.
+    pub gbuffer_material: i32,
+    /// Tiled shading and the far field read the lights from the `Lights`
+    /// uniform block (every light fits in it on every GL, and
+    /// `render.light_block` is on) rather than from the buffer texture.
+    pub light_block: bool,
 }
 
 impl LightingVariant {
@@ -46,6 +74,13 @@ impl LightingVariant {
         shadows: true,
         cascades: true,
         microfacet: true,
+        shadow_maps_2d: 4,
+        shadow_cubes: 4,
+        pcf_box: true,
+        pcf_poisson: true,
+        normal_maps: true,
+        gbuffer_material: -1,
+        light_block: false,
     };
 
     /// The parts `scene` needs, or `GENERAL` with `render.specialize` off.
@@ -57,6 +92,13 @@ impl LightingVariant {
         }
         let has = |k: LightKind| scene.lights.iter().any(|l| l.kind == k);
         let with_radius = lights.lights.iter().any(|f| f.radius.is_some());
+        let casters = shadows::casters(scene);
+        let pcf = |k: &[Pcf]| casters.iter().any(|c| k.contains(&c.shadow.pcf));
+        let material = match gbuffer::material_attachments(scene).len() {
+            0 => gbuffer::material_code::NONE,
+            1 => gbuffer::material_code::PLAIN,
+            _ => gbuffer::material_code::REPORT,
+        };
         LightingVariant {
             directional: has(LightKind::Directional),
             point: has(LightKind::Point),
@@ -67,6 +109,15 @@ impl LightingVariant {
             cascades: (scene.lights.iter()).any(|l| l.shadow.is_some_and(|s| s.cascades > 1)),
             microfacet: (scene.objects.iter())
                 .any(|o| scene.materials[o.material].microfacet.is_some()),
+            shadow_maps_2d: casters.iter().filter(|c| !c.cube).count() as u8,
+            shadow_cubes: casters.iter().filter(|c| c.cube).count() as u8,
+            pcf_box: pcf(&[Pcf::Box3, Pcf::Box5]),
+            pcf_poisson: pcf(&[Pcf::Poisson]),
+            normal_maps: scene.render.normal_mapping
+                && (scene.objects.iter()).any(|o| scene.materials[o.material].normal_map.is_some()),
+            gbuffer_material: material,
+            light_block: scene.render.light_block
+                && scene.lights.len() <= crate::frame::lights::LIGHTS_ON_EVERY_GL,
         }
     }
 
@@ -87,11 +138,23 @@ impl LightingVariant {
             ("VARIANT_SHADOWS", b(self.shadows)),
             ("VARIANT_CASCADES", b(self.cascades)),
             ("VARIANT_MICROFACET", b(self.microfacet)),
+            ("VARIANT_SHADOW_2D", self.shadow_maps_2d.to_string()),
+            ("VARIANT_SHADOW_CUBE", self.shadow_cubes.to_string()),
+            ("VARIANT_PCF_BOX", b(self.pcf_box)),
+            ("VARIANT_PCF_POISSON", b(self.pcf_poisson)),
+            ("VARIANT_NORMAL_MAPS", b(self.normal_maps)),
+            (
+                "VARIANT_GBUFFER_MATERIAL",
+                self.gbuffer_material.to_string(),
+            ),
+            ("VARIANT_LIGHT_BLOCK", b(self.light_block)),
         ]
     }
 
     /// In words, for `gloss plan`: "point + spot, notes falloff, no
-    /// shadows, Phong", or "general" for every part.
+    /// shadows, Phong", with what the shadows filter, the normal maps and
+    /// the G-buffer's material encoding when there are any ("1 2D map, 3x3
+    /// or 5x5 PCF"), or "general" for every part.
     pub fn describe(&self) -> String {
         if *self == LightingVariant::GENERAL {
             return "general (every light type, falloff, shadows, microfacet)".into();
@@ -116,18 +179,44 @@ impl LightingVariant {
             (false, true) => "linear falloff",
             (false, false) => "notes falloff",
         };
-        let shadows = if self.cascades {
-            "shadows (cascaded)"
-        } else if self.shadows {
-            "shadows"
+        let shadows = if self.shadows {
+            let mut maps = Vec::new();
+            if self.shadow_maps_2d > 0 {
+                maps.push(format!("{} 2D", self.shadow_maps_2d));
+            }
+            if self.shadow_cubes > 0 {
+                maps.push(format!("{} cube", self.shadow_cubes));
+            }
+            let filter = match (self.pcf_box, self.pcf_poisson) {
+                (false, false) => "one-lookup PCF",
+                (true, false) => "box PCF",
+                (false, true) => "Poisson PCF",
+                (true, true) => "box + Poisson PCF",
+            };
+            let n = self.shadow_maps_2d + self.shadow_cubes;
+            let noun = if n == 1 { "map" } else { "maps" };
+            let cascaded = if self.cascades { ", cascaded" } else { "" };
+            format!("shadows ({} {noun}{cascaded}, {filter})", maps.join(" + "))
         } else {
-            "no shadows"
+            "no shadows".to_string()
         };
         let model = if self.microfacet {
             "Phong + microfacet"
         } else {
             "Phong"
         };
-        format!("{types}, {falloff}, {shadows}, {model}")
+        let mut extra = String::new();
+        if self.normal_maps {
+            extra.push_str(", normal maps");
+        }
+        match self.gbuffer_material {
+            gbuffer::material_code::PLAIN => extra.push_str(", plain G-buffer triple"),
+            gbuffer::material_code::REPORT => extra.push_str(", report's G-buffer triple"),
+            _ => {}
+        }
+        if self.light_block {
+            extra.push_str(", lights from the uniform block");
+        }
+        format!("{types}, {falloff}, {shadows}, {model}{extra}")
     }
 }

@@ -50,8 +50,9 @@ fn save_png(img: &RgbaImage, path: &Path) -> anyhow::Result<()> {
 /// - If the golden file is missing, errors and says how to create it.
 /// - Otherwise compares over RGB with `tol.threshold`; if the images differ
 ///   in size or are outside `tol`, writes `<out_dir>/<name>.actual.png`,
-///   `.expected.png` and `.diff.png` (see [`diff_image`]) and returns an
-///   error naming the metrics, the tolerance and the three paths.
+///   `.expected.png`, `.diff.png` (see [`diff_image`]) and `.flip.png` (the
+///   FLIP map, [`super::flip`]) and returns an error naming the metrics,
+///   the FLIP mean and max, the tolerance and the four paths.
 pub fn check_golden(
     name: &str,
     actual: &RgbaImage,
@@ -108,21 +109,37 @@ fn check_golden_impl(
     }
 
     let stem = file_stem(name);
-    let paths: [PathBuf; 3] = [
+    let paths: [PathBuf; 4] = [
         out_dir.join(format!("{stem}.actual.png")),
         out_dir.join(format!("{stem}.expected.png")),
         out_dir.join(format!("{stem}.diff.png")),
+        out_dir.join(format!("{stem}.flip.png")),
     ];
     save_png(actual, &paths[0])?;
     save_png(&expected, &paths[1])?;
     save_png(&diff_image(actual, &expected), &paths[2])?;
+    // The perceptual error and its map, where the sizes allow one.
+    let flip_line = match super::flip::flip(actual, &expected) {
+        Ok(f) => {
+            let map = image::DynamicImage::ImageRgb8(f.map).to_rgba8();
+            save_png(&map, &paths[3])?;
+            format!(
+                "FLIP:     mean {:.4}, max {:.4}; map: {}",
+                f.mean,
+                f.max,
+                paths[3].display()
+            )
+        }
+        Err(e) => format!("FLIP:     none ({e})"),
+    };
     bail!(
         "{name} does not match its golden image {}\n\
          {}got:      {metrics}\n\
          allowed:  {tol}\n\
          actual:   {}\n\
          expected: {}\n\
-         diff x8:  {}",
+         diff x8:  {}\n\
+         {flip_line}",
         golden_path.display(),
         size_note.unwrap_or_default(),
         paths[0].display(),
@@ -190,6 +207,14 @@ mod tests {
             assert!(e.contains(&p.display().to_string()), "{e}");
         }
         assert!(e.contains("6.250% of pixels"), "{e}");
+        // The FLIP map is written and named, with a mean above 0 (one
+        // pixel of 16 differs).
+        let flip_map = out.join("scene_f.flip.png");
+        assert!(flip_map.exists(), "{} missing", flip_map.display());
+        assert!(e.contains(&flip_map.display().to_string()), "{e}");
+        let f = crate::image_compare::flip::flip(&actual, &expected).unwrap();
+        assert!(f.mean > 0.0, "{}", f.mean);
+        assert!(e.contains(&format!("FLIP:     mean {:.4}", f.mean)), "{e}");
         assert!(e.contains(&TOL.to_string()), "{e}");
         let diff = image::open(out.join("scene_f.diff.png"))
             .unwrap()
@@ -209,6 +234,7 @@ mod tests {
             .to_string();
         assert!(e.contains("actual 2x2, expected 4x4"), "{e}");
         assert!(out.join("small.diff.png").exists());
+        assert!(e.contains("FLIP:     none (cannot compute FLIP"), "{e}");
         let _ = std::fs::remove_dir_all(&dir);
     }
 

@@ -9,6 +9,7 @@
 //! changed files before committing them.
 
 pub mod bloom_reference;
+pub mod flip;
 mod golden;
 pub mod shadow_mask;
 pub mod shadow_metrics;

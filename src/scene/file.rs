@@ -135,6 +135,10 @@ pub(super) struct RenderFile {
     pub(super) sort_opaque: bool,
     /// Lighting shaders specialised to what the scene holds (src/frame/variant.rs).
     pub(super) specialize: bool,
+    /// Tiled shading and the far field read the lights from the uniform
+    /// block, not the buffer texture, when they fit (src/frame/variant.rs).
+    /// Off by default: on llvmpipe the two measured the same.
+    pub(super) light_block: bool,
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
     pub(super) msaa: u32,
@@ -195,6 +199,7 @@ impl Default for RenderFile {
             peel_layers: 8,
             sort_opaque: true,
             specialize: true,
+            light_block: false,
             post_chain: super::settings::ChainForm::PingPong,
             msaa: 1,
             frustum_culling: true,

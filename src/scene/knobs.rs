@@ -294,6 +294,19 @@ pub static SPECIALIZE: Knob = Knob {
     },
 };
 
+pub static LIGHT_BLOCK: Knob = Knob {
+    key: "render.light_block",
+    label: "lights from the uniform block",
+    help: "with specialised shaders, tiled shading and the far field read the lights from the uniform block when all of them fit on every GL (256); off (the default: on llvmpipe the two measured the same): from the buffer texture (src/frame/variant.rs)",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.light_block),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.light_block = b;
+        }
+    },
+};
+
 pub static FRUSTUM_CULLING: Knob = Knob {
     key: "render.frustum_culling",
     label: "frustum culling",
@@ -360,6 +373,7 @@ pub static ALL: &[&Knob] = &[
     &PEEL_LAYERS,
     &SORT_OPAQUE,
     &SPECIALIZE,
+    &LIGHT_BLOCK,
     &FRUSTUM_CULLING,
     &WIREFRAME,
     &OUTLINES,

@@ -119,6 +119,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         },
         sort_opaque: r.sort_opaque,
         specialize: r.specialize,
+        light_block: r.light_block,
         post_chain: r.post_chain,
         msaa: {
             if !MSAA_SAMPLES.contains(&r.msaa) {
@@ -249,6 +250,11 @@ pub struct RenderSettings {
     /// light types, falloff, shadows, materials: src/frame/variant.rs);
     /// false: the general shader, every part evaluated for every light.
     pub specialize: bool,
+    /// With `specialize`: tiled shading and the far field read the lights
+    /// from the `Lights` uniform block when every light fits in it on every
+    /// GL (256), instead of the buffer texture (src/frame/variant.rs). Off
+    /// by default: on llvmpipe the two measured the same.
+    pub light_block: bool,
     /// How the post chain passes its image along (src/scene/post.rs).
     pub post_chain: super::post::ChainForm,
     /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4

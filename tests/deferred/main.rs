@@ -35,6 +35,7 @@ mod light_volumes;
 mod numeric_edges;
 mod numeric_sweep;
 mod shader_variants;
+mod shader_variants_paths;
 mod stencil_light_volumes;
 mod tiled_shading;
 mod windowed_falloff;

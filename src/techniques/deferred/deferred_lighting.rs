@@ -25,6 +25,7 @@ use crate::frame::post::world_target;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
+use crate::frame::variant::LightingVariant;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
@@ -73,7 +74,12 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
             "{} light volumes, diffuse and specular apart, additive",
             lights.len()
         );
-        v.push(Pass::new("light pre-pass", LIGHT_ACCUMULATION, draws, file!()).step(LIGHT_PREPASS));
+        let variant = LightingVariant::of(scene, lights).describe();
+        v.push(
+            Pass::new("light pre-pass", LIGHT_ACCUMULATION, draws, file!())
+                .step(LIGHT_PREPASS)
+                .with_variant(variant),
+        );
     }
     let draws = format!(
         "{} objects again, GL_LEQUAL against the G-buffer's depth (blitted): material x light, {}",
@@ -110,7 +116,8 @@ struct DeferredLighting {
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let light = p.build(&[
+    // The per-light program is specialised to the frame (src/frame/variant.rs).
+    let light = p.build_variant(&[
         (glow::VERTEX_SHADER, "deferred/light_volumes.vert"),
         (glow::FRAGMENT_SHADER, "deferred/deferred_lighting.frag"),
     ])?;

@@ -39,6 +39,7 @@ use crate::frame::plan::Pass;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, TargetDesc, scaled_size};
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
+use crate::frame::variant::LightingVariant;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
@@ -111,7 +112,8 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     let draws = format!(
         "1 full-screen triangle at {sw}x{sh} (one sample per {k}x{k} pixels): the far part of {n} lights"
     );
-    vec![Pass::new("far field", TARGET, draws, file!())]
+    let variant = LightingVariant::of(scene, lights).describe();
+    vec![Pass::new("far field", TARGET, draws, file!()).with_variant(variant)]
 }
 
 fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
@@ -140,8 +142,9 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (glow::FRAGMENT_SHADER, "deferred/far_field.frag"),
     ];
-    let program = p.build(&stages)?;
-    let bound = p.build_with(&stages, &[("FAR_FIELD_BOUND", "1".into())])?;
+    // Specialised to the frame (src/frame/variant.rs), like the pass that reads it.
+    let program = p.build_variant(&stages)?;
+    let bound = p.build_variant_with(&stages, &[("FAR_FIELD_BOUND", "1".into())])?;
     for program in [&program, &bound] {
         // casts_shadow reads the Shadows block (common/shadow.glsl).
         program.bind_uniform_block("Lights", LIGHTS_BINDING);

@@ -36,6 +36,7 @@ use crate::frame::plan::Pass;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::LIGHTS_BINDING;
+use crate::frame::variant::LightingVariant;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Program;
@@ -77,7 +78,12 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         "{}, front faces culled, additive",
         describe_volumes(scene, lights)
     );
-    vec![Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!()).reading(reads(scene))]
+    let variant = LightingVariant::of(scene, lights).describe();
+    vec![
+        Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())
+            .reading(reads(scene))
+            .with_variant(variant),
+    ]
 }
 
 /// What the volumes' shader samples: the G-buffer, and the shadow maps
@@ -135,9 +141,10 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     }))
 }
 
-/// The light-volume shading program (also the stencil variant's).
+/// The light-volume shading program (also the stencil variant's),
+/// specialised to the frame (src/frame/variant.rs).
 pub fn volume_program(p: &Programs) -> Result<Program> {
-    let program = p.build(&[
+    let program = p.build_variant(&[
         (glow::VERTEX_SHADER, "deferred/light_volumes.vert"),
         (glow::FRAGMENT_SHADER, "deferred/light_volumes.frag"),
     ])?;

@@ -26,6 +26,7 @@ use crate::frame::gbuffer;
 use crate::frame::lights::{FrameLights, Volume};
 use crate::frame::plan::Pass;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
+use crate::frame::variant::LightingVariant;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
@@ -68,9 +69,11 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         "{}, stencil-marked then shaded, additive",
         describe_volumes(scene, lights)
     );
+    let variant = LightingVariant::of(scene, lights).describe();
     vec![
         Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())
-            .reading(light_volumes::reads(scene)),
+            .reading(light_volumes::reads(scene))
+            .with_variant(variant),
     ]
 }
 

@@ -65,6 +65,7 @@ pub const TILED_SHADING: Technique = Technique {
         &knobs::TILE_SIZE,
         &knobs::DEPTH_SLICES,
         &knobs::FAR_FIELD,
+        &knobs::LIGHT_BLOCK,
         &knobs::ACCUMULATION,
     ],
     passes,

@@ -93,11 +93,8 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         scene.lights.len()
     );
     let pass = Pass::new("forward", world_target(scene), draws, file!());
-    // Phong shading's program is specialised to the frame (src/frame/variant.rs).
-    if scene.render.shading == Shading::Phong {
-        return vec![pass.with_variant(LightingVariant::of(scene, lights).describe())];
-    }
-    vec![pass]
+    // Every shading mode's program is specialised to the frame (src/frame/variant.rs).
+    vec![pass.with_variant(LightingVariant::of(scene, lights).describe())]
 }
 
 fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
@@ -115,11 +112,11 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "lighting/forward.vert"),
         (glow::FRAGMENT_SHADER, "lighting/forward.frag"),
     ])?;
-    let gouraud = p.build(&[
+    let gouraud = p.build_variant(&[
         (glow::VERTEX_SHADER, "lighting/forward_gouraud.vert"),
         (glow::FRAGMENT_SHADER, "lighting/forward_gouraud.frag"),
     ])?;
-    let flat = p.build(&[
+    let flat = p.build_variant(&[
         (glow::VERTEX_SHADER, "lighting/forward_flat.vert"),
         (glow::GEOMETRY_SHADER, "lighting/forward_flat.geom"),
         (glow::FRAGMENT_SHADER, "lighting/forward_flat.frag"),

@@ -160,7 +160,14 @@ impl DrawList {
                 .transpose()?;
             // Data, not colour: normal, specular and height maps and glTF's
             // metallic-roughness and occlusion are linear (GL_RGBA8); emission is colour.
-            let [normal_map, specular_map, height_map, metal_rough, occlusion, emissive] = [
+            let [
+                normal_map,
+                specular_map,
+                height_map,
+                metal_rough,
+                occlusion,
+                emissive,
+            ] = [
                 (&m.normal_map, false),
                 (&m.specular_map, false),
                 (&m.height_map, false),

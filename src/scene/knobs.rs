@@ -11,8 +11,8 @@ use glam::Vec3;
 
 mod animation;
 mod blending;
-pub mod keys;
 mod instancing;
+pub mod keys;
 mod lighting;
 mod parallax;
 mod sky;

@@ -12,7 +12,8 @@ use anyhow::{Result, bail};
 use glam::Vec3;
 
 pub use super::checks::{
-    DEPTH_SLICES, FAR_FIELD_SCALES, MAX_MIRROR_DEPTH, MSAA_SAMPLES, PARALLAX_LAYERS, PEEL_LAYERS, TILE_SIZES,
+    DEPTH_SLICES, FAR_FIELD_SCALES, MAX_MIRROR_DEPTH, MSAA_SAMPLES, PARALLAX_LAYERS, PEEL_LAYERS,
+    TILE_SIZES,
 };
 
 /// Render settings (the `[render]` table).

@@ -298,6 +298,7 @@ fn shadow_knobs_survive_save_as() {
         pcf,
         fit,
         cube,
+        ..Shadow::default()
     };
     let mut directional = common::scene("shadows-directional.toml");
     directional.lights[0].shadow = Some(knobs(

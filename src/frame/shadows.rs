@@ -280,7 +280,7 @@ impl ShadowMaps {
                     let s = c.shadow;
                     (c.light, c.slot, c.cube, s.resolution, s.cube, s.cascades)
                 };
-                key(&n) == key(o)
+                key(n) == key(o)
             });
         if !same_textures {
             *self = ShadowMaps::new(gl, scene, self.max_lights)?;

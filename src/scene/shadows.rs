@@ -305,7 +305,7 @@ pub(super) fn shadow(key: &str, file: Option<&toml::Value>, point: bool) -> Resu
     if texels > 1 << 27 {
         bail!(
             "{key}: {cascades} cascades of {resolution} x {resolution} texels are {} MiB of depth; at most 512 MiB (e.g. 8 x 4096 or 4 x 4096)",
-            texels * 4 >> 20
+            (texels * 4) >> 20
         );
     }
     let split = match &t.split {

@@ -102,6 +102,7 @@ pub mod unit {
     pub const IBL_IRRADIANCE: u32 = 21;
     pub const IBL_PREFILTERED: u32 = 22;
     pub const IBL_BRDF: u32 = 23;
+    // 24: the cascaded shadow maps' array (src/frame/shadows/cascades.rs).
 }
 
 /// The uniform-block binding point of the `Lights` block (glsl/common/lighting.glsl).

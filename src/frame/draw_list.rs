@@ -160,14 +160,7 @@ impl DrawList {
                 .transpose()?;
             // Data, not colour: normal, specular and height maps and glTF's
             // metallic-roughness and occlusion are linear (GL_RGBA8); emission is colour.
-            let [
-                normal_map,
-                specular_map,
-                height_map,
-                metal_rough,
-                occlusion,
-                emissive,
-            ] = [
+            let [normal, specular, height, metal_rough, occlusion, emissive] = [
                 (&m.normal_map, false),
                 (&m.specular_map, false),
                 (&m.height_map, false),
@@ -176,7 +169,7 @@ impl DrawList {
                 (&m.pbr.emissive_map, true),
             ]
             .map(|(p, srgb)| p.as_ref().map(|p| load(p, srgb)).transpose());
-            let (normal_map, specular_map, height_map) = (normal_map?, specular_map?, height_map?);
+            let (normal_map, specular_map, height_map) = (normal?, specular?, height?);
             let pbr_maps = [metal_rough?, occlusion?, emissive?];
             let roughness = (o.mirror.as_ref().and_then(|m| m.roughness.as_ref()))
                 .map(|p| load(p, false)) // a rough mirror's roughness map: data

@@ -6,7 +6,7 @@
 //! lists the knobs it reads in its registration.
 
 use super::RenderSettings;
-use super::settings::{BillboardMode, ChainForm, DepthFunc, MirrorOrder, RenderPath, Shading};
+use super::settings::{BillboardMode, ChainForm, DepthFunc, RenderPath, Shading};
 use glam::Vec3;
 
 mod animation;
@@ -27,7 +27,9 @@ pub use lighting::{
 };
 pub use parallax::{PARALLAX, PARALLAX_LAYERS, PARALLAX_SHADOWS, PARALLAX_UV};
 pub use sky::{IBL, SKY_FIRST};
-pub use stencil::{OUTLINE_WIDTH, OUTLINES};
+pub use stencil::{
+    MIRROR_CLIP, MIRROR_DEPTH, MIRROR_ORDER, MIRROR_WINDING, OUTLINE_WIDTH, OUTLINES,
+};
 pub use texturing::{INTERPOLATION, LIGHT_MAPS, MIP_COLORS, NORMAL_MAPPING, TEXTURE_FILTER};
 
 /// What a knob holds.
@@ -166,61 +168,6 @@ pub static POST_CHAIN: Knob = Knob {
     set: |r, v| {
         if let Value::Choice(i) = v {
             r.post_chain = ChainForm::ALL[i];
-        }
-    },
-};
-
-pub static MIRROR_ORDER: Knob = Knob {
-    key: "render.mirror_order",
-    label: "mirror order",
-    help: "notes 05: normal first (several mirrors, recursion) or reflected first (one mirror)",
-    kind: Kind::Choice(MirrorOrder::WORDS),
-    get: |r| Value::Choice(index(MirrorOrder::ALL, r.mirror_order)),
-    set: |r, v| {
-        if let Value::Choice(i) = v {
-            r.mirror_order = MirrorOrder::ALL[i];
-        }
-    },
-};
-
-pub static MIRROR_DEPTH: Knob = Knob {
-    key: "render.mirror_depth",
-    label: "mirror depth",
-    help: "how many mirrors deep a reflection goes (mirrors seen in mirrors)",
-    kind: Kind::Count {
-        min: 1,
-        max: super::checks::MAX_MIRROR_DEPTH,
-    },
-    get: |r| Value::Count(r.mirror_depth),
-    set: |r, v| {
-        if let Value::Count(n) = v {
-            r.mirror_depth = n;
-        }
-    },
-};
-
-pub static MIRROR_CLIP: Knob = Knob {
-    key: "render.mirror_clip",
-    label: "clip behind mirror",
-    help: "notes 05: a clip plane (gl_ClipDistance[0]) cuts away what lies behind the mirror; off shows it in the reflection",
-    kind: Kind::Bool,
-    get: |r| Value::Bool(r.mirror_clip),
-    set: |r, v| {
-        if let Value::Bool(b) = v {
-            r.mirror_clip = b;
-        }
-    },
-};
-
-pub static MIRROR_WINDING: Knob = Knob {
-    key: "render.mirror_winding",
-    label: "mirror winding fix",
-    help: "notes 05 \"Small Problem\": glFrontFace(GL_CW) while drawing a reflection; off culls the wrong faces",
-    kind: Kind::Bool,
-    get: |r| Value::Bool(r.mirror_winding),
-    set: |r, v| {
-        if let Value::Bool(b) = v {
-            r.mirror_winding = b;
         }
     },
 };

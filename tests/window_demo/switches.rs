@@ -20,10 +20,10 @@ fn the_outlines_checkbox_switches_outlines_off_and_on() {
         start --window 1280x1000 outlines
         sleep 2
         key F12; shot 1
-        xdotool mousemove 128 692; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        xdotool mousemove 128 756; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
         sleep 1
         key F12; shot 2
-        xdotool mousemove 128 751; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        xdotool mousemove 128 831; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
         sleep 1
         key F12; shot 3
         quit
@@ -64,7 +64,7 @@ fn the_instancing_checkbox_switches_to_one_draw_per_rock_and_the_same_image() {
         sleep 2
         key F12; shot 1
         key shift+F12; shot 2
-        xdotool mousemove 130 693; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        xdotool mousemove 130 757; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
         sleep 1
         key F12; shot 3
         key shift+F12; shot 4
@@ -79,7 +79,7 @@ fn the_instancing_checkbox_switches_to_one_draw_per_rock_and_the_same_image() {
     // The checkbox (its 16 x 16 box at the click) lost its tick.
     let (before, after) = (shot(&dir, &log, 2), shot(&dir, &log, 4));
     let ticked = |img: &image::RgbaImage| {
-        (685..701)
+        (749..765)
             .flat_map(|y| (122..138).map(move |x| (x, y)))
             .filter(|&(x, y)| img.get_pixel(x, y)[0] > 180)
             .count()
@@ -105,10 +105,10 @@ fn the_show_normals_checkbox_switches_the_lines_off_and_on() {
         start --window 1280x1000 normals
         sleep 2
         key F12; shot 1
-        xdotool mousemove 121 692; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        xdotool mousemove 121 756; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
         sleep 1
         key F12; shot 2
-        xdotool mousemove 121 751; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        xdotool mousemove 121 831; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
         sleep 1
         key F12; shot 3
         quit

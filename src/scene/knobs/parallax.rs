@@ -1,7 +1,7 @@
 //! The knobs of parallax mapping (docs/lighting/parallax_mapping.md).
 
 use super::{Kind, Knob, Value, index};
-use crate::scene::render_settings::PARALLAX_LAYERS as LAYERS;
+use crate::scene::checks::PARALLAX_LAYERS as LAYERS;
 use crate::scene::settings::Parallax;
 
 pub static PARALLAX: Knob = Knob {

@@ -1,8 +1,9 @@
-//! The knobs of the stencil techniques beyond the notes' mirrors: object
-//! outlines (LearnOpenGL, 4.advanced_opengl "Stencil testing").
+//! The knobs of the stencil techniques: the notes 05 mirrors, and beyond
+//! them object outlines (LearnOpenGL, 4.advanced_opengl "Stencil testing").
 
-use super::{Kind, Knob, Value};
+use super::{Kind, Knob, Value, index};
 use crate::scene::outlines::OUTLINE_WIDTHS;
+use crate::scene::settings::MirrorOrder;
 
 pub static OUTLINES: Knob = Knob {
     key: "render.outlines",
@@ -29,6 +30,61 @@ pub static OUTLINE_WIDTH: Knob = Knob {
     set: |r, v| {
         if let Value::Count(n) = v {
             r.outline_width = n;
+        }
+    },
+};
+
+pub static MIRROR_ORDER: Knob = Knob {
+    key: "render.mirror_order",
+    label: "mirror order",
+    help: "notes 05: normal first (several mirrors, recursion) or reflected first (one mirror)",
+    kind: Kind::Choice(MirrorOrder::WORDS),
+    get: |r| Value::Choice(index(MirrorOrder::ALL, r.mirror_order)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.mirror_order = MirrorOrder::ALL[i];
+        }
+    },
+};
+
+pub static MIRROR_DEPTH: Knob = Knob {
+    key: "render.mirror_depth",
+    label: "mirror depth",
+    help: "how many mirrors deep a reflection goes (mirrors seen in mirrors)",
+    kind: Kind::Count {
+        min: 1,
+        max: crate::scene::checks::MAX_MIRROR_DEPTH,
+    },
+    get: |r| Value::Count(r.mirror_depth),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.mirror_depth = n;
+        }
+    },
+};
+
+pub static MIRROR_CLIP: Knob = Knob {
+    key: "render.mirror_clip",
+    label: "clip behind mirror",
+    help: "notes 05: a clip plane (gl_ClipDistance[0]) cuts away what lies behind the mirror; off shows it in the reflection",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.mirror_clip),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.mirror_clip = b;
+        }
+    },
+};
+
+pub static MIRROR_WINDING: Knob = Knob {
+    key: "render.mirror_winding",
+    label: "mirror winding fix",
+    help: "notes 05 \"Small Problem\": glFrontFace(GL_CW) while drawing a reflection; off culls the wrong faces",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.mirror_winding),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.mirror_winding = b;
         }
     },
 };

@@ -102,27 +102,9 @@ pub fn monte_carlo_irradiance(
     strata: u32,
     seed: u64,
 ) -> (f64, f64) {
-    let mut rng = crate::math::lcg::Lcg(seed);
-    let c = &light.corners;
-    let (e1, e2) = (c[1] - c[0], c[3] - c[0]);
-    let (nl, area) = (light.normal(), light.area());
-    let count = f64::from(strata) * f64::from(strata);
-    let (mut sum, mut sum2) = (0.0, 0.0);
-    for i in 0..strata {
-        for j in 0..strata {
-            let s = (f64::from(i) + f64::from(rng.next())) / f64::from(strata);
-            let t = (f64::from(j) + f64::from(rng.next())) / f64::from(strata);
-            let d = c[0] + e1 * s + e2 * t - p;
-            let r2 = d.length_squared();
-            let w = d / r2.sqrt();
-            let f = n.dot(w).max(0.0) * (-nl.dot(w)).max(0.0) / r2 * area;
-            sum += f;
-            sum2 += f * f;
-        }
-    }
-    let mean = sum / count;
-    let var = (sum2 / count - mean * mean).max(0.0);
-    (mean, (var / count).sqrt())
+    jittered_over_quad(p, light, strata, seed, |w, r2, cos_l| {
+        n.dot(w).max(0.0) * cos_l / r2
+    })
 }
 
 /// The specular light at `p` (normal `n`, toward the eye `v`) from `light`
@@ -140,6 +122,28 @@ pub fn monte_carlo_specular(
     strata: u32,
     seed: u64,
 ) -> (f64, f64) {
+    jittered_over_quad(p, light, strata, seed, |w, r2, cos_l| {
+        let cos = n.dot(w);
+        if cos > 0.0 {
+            let f_s = super::microfacet::brdf(w, v, n, alpha, eta, 1.0);
+            f_s * cos * cos_l / r2
+        } else {
+            0.0
+        }
+    })
+}
+
+/// The mean and standard error of `f(w, r^2, max(0, -n_l . w)) area` at
+/// `strata` x `strata` jittered points over `light` seen from `p` (w the
+/// unit direction to the point, r its distance): the one estimator both
+/// Monte Carlo references use.
+fn jittered_over_quad(
+    p: DVec3,
+    light: &QuadLight,
+    strata: u32,
+    seed: u64,
+    f: impl Fn(DVec3, f64, f64) -> f64,
+) -> (f64, f64) {
     let mut rng = crate::math::lcg::Lcg(seed);
     let c = &light.corners;
     let (e1, e2) = (c[1] - c[0], c[3] - c[0]);
@@ -153,15 +157,9 @@ pub fn monte_carlo_specular(
             let d = c[0] + e1 * s + e2 * t - p;
             let r2 = d.length_squared();
             let w = d / r2.sqrt();
-            let cos = n.dot(w);
-            let f = if cos > 0.0 {
-                let f_s = super::microfacet::brdf(w, v, n, alpha, eta, 1.0);
-                f_s * cos * (-nl.dot(w)).max(0.0) / r2 * area
-            } else {
-                0.0
-            };
-            sum += f;
-            sum2 += f * f;
+            let x = f(w, r2, (-nl.dot(w)).max(0.0)) * area;
+            sum += x;
+            sum2 += x * x;
         }
     }
     let mean = sum / count;

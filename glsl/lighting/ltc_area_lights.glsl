@@ -51,30 +51,40 @@ int clip_to_horizon(vec3 p[6], int n, out vec3 q[6]) {
     return m;
 }
 
-// LTC_Evaluate: the form factor of area light `light` at P through Minv.
-float ltc_evaluate(vec3 N, vec3 V, vec3 P, mat3 Minv, int light, bool two_sided) {
+// Lambert's sum over the polygon q[0..n) on the unit sphere: -1/(2 pi)
+// sum of the edges' integrals (one-sided lights shine toward a negative sum).
+float form_factor(vec3 q[6], int n) {
+    float sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        sum += integrate_edge(normalize(q[i]), normalize(q[i + 1 < n ? i + 1 : 0]));
+    }
+    return -sum / (2.0 * LTC_PI);
+}
+
+// LTC_Evaluate for area light `light` at P, the diffuse form factor
+// (M^-1 the identity) in x and the specular one (through Minv) in y: the
+// frame and the first clip are shared.
+vec2 ltc_evaluate(vec3 N, vec3 V, vec3 P, mat3 Minv, int light, bool two_sided) {
     // 1. The frame: T1 in the plane of N and V (any tangent at V = N).
     vec3 t = V - N * dot(V, N);
     vec3 T1 = length(t) > 1e-6 ? normalize(t)
             : normalize(abs(N.x) < 0.9 ? cross(N, vec3(1.0, 0.0, 0.0)) : cross(N, vec3(0.0, 1.0, 0.0)));
     vec3 T2 = cross(N, T1);
     mat3 frame = transpose(mat3(T1, T2, N));
-    // 2. The corners into it, clipped to the surface's horizon, through M^-1.
+    // 2. The corners into it, clipped to the surface's horizon.
     vec3 p[6];
     for (int i = 0; i < 4; ++i) p[i] = frame * (u_area_corners[4 * light + i] - P);
     vec3 q[6];
     int n = clip_to_horizon(p, 4, q);
+    if (n < 3) return vec2(0.0);
+    // The diffuse term: 4. Lambert's sum, M^-1 the identity.
+    float diffuse = form_factor(q, n);
+    // The specular term: through M^-1, 3. clipped to the cosine's horizon, 4.
     for (int i = 0; i < n; ++i) p[i] = Minv * q[i];
-    // 3. Clipped to the cosine's horizon.
-    n = clip_to_horizon(p, n, q);
-    if (n < 3) return 0.0;
-    // 4. Lambert's sum on the unit sphere.
-    float sum = 0.0;
-    for (int i = 0; i < n; ++i) {
-        sum += integrate_edge(normalize(q[i]), normalize(q[i + 1 < n ? i + 1 : 0]));
-    }
-    float ff = -sum / (2.0 * LTC_PI);
-    return two_sided ? abs(ff) : max(ff, 0.0);
+    int m = clip_to_horizon(p, n, q);
+    float specular = m < 3 ? 0.0 : form_factor(q, m);
+    vec2 ff = vec2(diffuse, specular);
+    return two_sided ? abs(ff) : max(ff, vec2(0.0));
 }
 
 // The light every area light gives the surface at P (normal N, toward the eye V).
@@ -91,10 +101,8 @@ vec3 ltc_area_lights(vec3 P, vec3 N, vec3 V, vec3 kd, vec3 ks, Reflectance r) {
     float scale = r.microfacet ? f * f * t2.x + (1.0 - f * f) * t2.y : t2.x;
     vec3 c = vec3(0.0);
     for (int i = 0; i < u_area_light_count; ++i) {
-        bool two = u_area_two_sided[i];
-        float diffuse = ltc_evaluate(N, V, P, mat3(1.0), i, two);
-        float specular = ltc_evaluate(N, V, P, Minv, i, two) * scale;
-        c += u_area_radiance[i] * (kd * diffuse + ks * specular);
+        vec2 ff = ltc_evaluate(N, V, P, Minv, i, u_area_two_sided[i]);
+        c += u_area_radiance[i] * (kd * ff.x + ks * (ff.y * scale));
     }
     return c;
 }

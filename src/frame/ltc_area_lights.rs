@@ -51,10 +51,18 @@ impl LtcTables {
 fn upload(gl: &Gl, table: &[[f32; 4]]) -> Result<Texture> {
     let n = LTC_SIZE as i32;
     if table.len() != LTC_SIZE * LTC_SIZE {
-        bail!("LTC table: expected {} texels, found {}", LTC_SIZE * LTC_SIZE, table.len());
+        bail!(
+            "LTC table: expected {} texels, found {}",
+            LTC_SIZE * LTC_SIZE,
+            table.len()
+        );
     }
     let texture = Texture::render_target(gl, n, n, glow::RGBA32F)?;
-    let bytes: Vec<u8> = table.iter().flatten().flat_map(|x| x.to_le_bytes()).collect();
+    let bytes: Vec<u8> = table
+        .iter()
+        .flatten()
+        .flat_map(|x| x.to_le_bytes())
+        .collect();
     unsafe {
         gl.bind_texture(glow::TEXTURE_2D, Some(texture.id));
         gl.tex_sub_image_2d(
@@ -134,4 +142,3 @@ pub fn check_units(gl: &glow::Context, scene: &Scene) -> Result<()> {
     }
     Ok(())
 }
-

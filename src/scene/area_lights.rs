@@ -94,7 +94,11 @@ pub(super) fn resolve(files: &[AreaLightFile]) -> Result<Vec<AreaLight>> {
     for (i, f) in files.iter().enumerate() {
         let key = |k: &str| format!("area_lights[{i}].{k}");
         finite(&key("center"), &f.center)?;
-        if !f.size.iter().all(|s| s.is_finite() && *s > 0.0 && *s <= 1e4) {
+        if !f
+            .size
+            .iter()
+            .all(|s| s.is_finite() && *s > 0.0 && *s <= 1e4)
+        {
             bail!(
                 "{}: expected a width and height in (0, 1e4], found {:?}",
                 key("size"),

@@ -12,8 +12,8 @@
 
 mod alpha_test;
 pub mod ambient_occlusion;
-pub mod area_lights;
 pub mod animation;
+pub mod area_lights;
 mod billboards;
 pub mod bloom;
 pub mod camera_limits;

@@ -75,7 +75,12 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let draws = format!(
         "{n} area lights x 2 triangles, each its radiance (the forward pass shaded the world with them by LTC)"
     );
-    vec![Pass::new("area lights", world_target(scene), draws, file!())]
+    vec![Pass::new(
+        "area lights",
+        world_target(scene),
+        draws,
+        file!(),
+    )]
 }
 
 fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {

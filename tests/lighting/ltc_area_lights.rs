@@ -205,3 +205,45 @@ fn other_paths_and_shadings_say_they_leave_the_lights_out() {
         assert!(plan.passes.iter().all(|p| p.name != "area lights"), "{key}");
     }
 }
+
+#[test]
+fn bad_area_light_keys_are_errors_that_name_the_key() {
+    let base = "name = \"t\"\n[camera]\neye = [0.0, 1.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\n";
+    let light = |keys: &str| format!("{base}[[area_lights]]\n{keys}\n");
+    let good = "center = [0.0, 1.0, 0.0]\nsize = [1.0, 1.0]\nnormal = [0.0, -1.0, 0.0]";
+    let path = common::root().join("scenes/t.toml");
+    assert!(Scene::parse(&light(good), &path).is_ok());
+    for (keys, says) in [
+        (
+            "center = [0.0, 1.0, 0.0]\nsize = [1.0, 0.0]\nnormal = [0.0, -1.0, 0.0]",
+            "area_lights[0].size: expected a width and height in (0, 1e4]",
+        ),
+        (
+            "center = [0.0, 1.0, 0.0]\nsize = [1.0, 1.0]\nnormal = [0.0, 0.0, 0.0]",
+            "area_lights[0].normal: must not be zero",
+        ),
+        (
+            &format!("{good}\nup = [0.0, 2.0, 0.0]"),
+            "area_lights[0].up: expected a direction not parallel to normal",
+        ),
+        (
+            &format!("{good}\nintensity = -1.0"),
+            "area_lights[0].intensity: expected values >= 0",
+        ),
+        (&format!("{good}\ncolour = [1.0, 1.0, 1.0]"), "colour"),
+    ] {
+        let e = format!("{:#}", Scene::parse(&light(keys), &path).unwrap_err());
+        assert!(e.contains(says), "{keys}: {e}");
+    }
+    let nine = (0..9)
+        .map(|_| format!("[[area_lights]]\n{good}\n"))
+        .collect::<String>();
+    let e = format!(
+        "{:#}",
+        Scene::parse(&format!("{base}{nine}"), &path).unwrap_err()
+    );
+    assert!(
+        e.contains("area_lights: expected at most 8 area lights, found 9"),
+        "{e}"
+    );
+}

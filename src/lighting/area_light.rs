@@ -47,6 +47,18 @@ impl QuadLight {
         (c[1] - c[0]).cross(c[3] - c[0]).length()
     }
 
+    /// A scene's `[[area_lights]]` entry (src/scene/area_lights.rs) in f64.
+    pub fn of(light: &crate::scene::area_lights::AreaLight) -> Self {
+        let [w, h] = light.size;
+        let d = |v: glam::Vec3| v.as_dvec3();
+        QuadLight::rectangle(
+            d(light.center),
+            d(light.normal),
+            d(light.up),
+            (f64::from(w), f64::from(h)),
+        )
+    }
+
     /// A `width` x `height` rectangle about `center` shining toward
     /// `normal` (unit), its height along `up` (unit, at right angles to
     /// `normal`): corners C - T - B, C + T - B, C + T + B, C - T + B with

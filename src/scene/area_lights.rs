@@ -18,9 +18,8 @@
 //! their keys (attenuation, range, cone) and needs its own shading.
 
 use super::checks::{finite, non_negative};
-use crate::lighting::area_light::QuadLight;
 use anyhow::{Result, bail};
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 use serde::Deserialize;
 
 /// The most area lights a scene may have (the shader's uniform arrays).
@@ -66,20 +65,14 @@ impl AreaLight {
         self.color * self.intensity
     }
 
-    /// Its rectangle (src/lighting/area_light.rs): corners with
-    /// (c1 - c0) x (c3 - c0) along `normal`.
-    pub fn quad(&self) -> QuadLight {
-        QuadLight::rectangle(
-            self.center.as_dvec3(),
-            self.normal.as_dvec3(),
-            self.up.as_dvec3(),
-            (f64::from(self.size[0]), f64::from(self.size[1])),
-        )
-    }
-
-    /// The four corners in f32, as the shader receives them.
+    /// The four corners, as the shader receives them: C - T - B, C + T - B,
+    /// C + T + B, C - T + B with B = up height / 2, T = (up x normal)
+    /// width / 2, so that (c1 - c0) x (c3 - c0) points along `normal`
+    /// (`QuadLight::rectangle` in src/lighting/area_light.rs, in f64).
     pub fn corners(&self) -> [Vec3; 4] {
-        self.quad().corners.map(|c: DVec3| c.as_vec3())
+        let (c, b) = (self.center, self.up * (0.5 * self.size[1]));
+        let t = self.up.cross(self.normal) * (0.5 * self.size[0]);
+        [c - t - b, c + t - b, c + t + b, c - t + b]
     }
 }
 

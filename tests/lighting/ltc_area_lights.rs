@@ -82,7 +82,7 @@ fn beside(bottom: f32) -> String {
 fn diffuse_matches(light: &str, tilt: f32, two_sided: bool) -> f64 {
     let light = format!("{light}\ntwo_sided = {two_sided}");
     let scene = lit_plane(&light, MATTE, tilt);
-    let quad = scene.area_lights[0].quad();
+    let quad = QuadLight::of(&scene.area_lights[0]);
     let mut total = 0.0;
     for (x, y, got, p, n, _) in pixels(&scene) {
         // Two-sided from behind: the same rectangle wound the other way.
@@ -130,7 +130,7 @@ fn the_full_shading_against_the_cpu_twin_and_monte_carlo() {
             "center = [0.0, 1.2, 1.5]\nsize = [1.2, 0.8]\nnormal = [0.0, -0.6, -1.0]".to_string()
         };
         let scene = lit_plane(&light, &material, tilt);
-        let quad: QuadLight = scene.area_lights[0].quad();
+        let quad: QuadLight = QuadLight::of(&scene.area_lights[0]);
         let l_e = f64::from(RADIANCE);
         let (mut worst_twin, mut worst_mc, mut most_specular) = (0.0f64, 0.0f64, 0.0f64);
         let mut lit = 0;

@@ -8,6 +8,7 @@
 #include "common/lighting_output.glsl"
 #include "common/environment.glsl"
 #include "common/image_based_lighting.glsl"
+#include "lighting/ltc_area_lights.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -56,6 +57,8 @@ void main() {
         c += lit * surface_shade(u_lights[i], v_position, N, V, kd, ks, r);
     }
 #endif
+    // Area lights by linearly transformed cosines (lighting/ltc_area_lights.rs).
+    c += ltc_area_lights(v_position, N, V, kd, ks, r);
     c += environment_reflection(u_reflectivity, N, V);   // notes 03, Implementation
     frag_color = output_color(c);
 }

@@ -224,6 +224,10 @@ impl Demo {
                 settings.stencil_volumes = !settings.stencil_volumes;
                 Action::Settings(settings)
             }
+            KeyAction::ToggleAreaLights => {
+                settings.area_lights = !settings.area_lights;
+                Action::Settings(settings)
+            }
             KeyAction::NextView => {
                 let Some(run) = self.running.as_ref() else {
                     return;

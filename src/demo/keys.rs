@@ -19,6 +19,7 @@ pub const KEYS: &[(&str, &str)] = &[
     ),
     ("G", "next shading mode (flat, Gouraud, Phong)"),
     ("V", "stencil light volumes on or off"),
+    ("L", "area lights (LTC) on or off"),
     ("I", "next pass-inspector view"),
     ("R", "reset the camera to the scene's"),
     (
@@ -47,6 +48,7 @@ pub enum KeyAction {
     Path(usize),
     NextShading,
     ToggleStencil,
+    ToggleAreaLights,
     NextView,
     ResetCamera,
     Fly,
@@ -71,6 +73,7 @@ pub fn action(key: &winit::keyboard::Key, shift: bool) -> Option<KeyAction> {
             "4" => KeyAction::Path(3),
             "g" => KeyAction::NextShading,
             "v" => KeyAction::ToggleStencil,
+            "l" => KeyAction::ToggleAreaLights,
             "i" => KeyAction::NextView,
             "r" => KeyAction::ResetCamera,
             "f" => KeyAction::Fly,

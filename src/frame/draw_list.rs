@@ -59,8 +59,7 @@ pub struct DrawItem {
     pub light_map: Option<usize>,
     /// How the texture is sampled, and the uv transform (notes 01 §5).
     pub texturing: Texturing,
-    /// The object is a mirror: the mirror technique draws it (stencil/mirror.rs),
-    /// the passes that draw the world skip it.
+    /// A mirror: the mirror technique draws it (stencil/mirror.rs), the world's passes skip it.
     pub mirror: bool,
     /// A mirror's roughening texture (linear greyscale), if it has one.
     pub roughness: Option<usize>,
@@ -99,12 +98,12 @@ pub struct DrawList {
     pub skins: Vec<SkinDraw>,
     /// The environment cube map (src/frame/environment.rs).
     pub environment: super::environment::Environment,
-    /// The objects' boxes through the scene graph, for frustum culling
-    /// (src/frame/culling.rs), and each object's parent.
+    /// The LTC tables of the `[[area_lights]]` (src/frame/ltc_area_lights.rs).
+    pub ltc: Option<super::ltc_area_lights::LtcTables>,
+    /// The objects' boxes through the graph, for culling (src/frame/culling.rs); each one's parent.
     cull_tree: CullTree,
     parents: Vec<Option<usize>>,
-    /// What the camera's last culled walk did (`Frame::opaque_order` sets
-    /// it; the demo and the bench show it).
+    /// What the camera's last culled walk did (`Frame::opaque_order` sets it; demo, bench show it).
     pub last_cull: Cell<CullStats>,
     /// What the shadow passes' culling kept of the casters, summed over
     /// the frame's shadow-map faces (the shadow technique adds to it).
@@ -227,6 +226,7 @@ impl DrawList {
             billboards: BillboardDraws::new(gl, scene)?,
             skins,
             environment: super::environment::Environment::new(gl, scene)?,
+            ltc: super::ltc_area_lights::LtcTables::for_scene(gl, scene)?,
             cull_tree: CullTree::default(),
             parents: scene.objects.iter().map(|o| o.parent).collect(),
             last_cull: Cell::default(),

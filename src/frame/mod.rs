@@ -34,6 +34,7 @@ pub mod gbuffer;
 pub mod image_based_lighting;
 pub mod light_maps;
 pub mod lights;
+pub mod ltc_area_lights;
 pub mod meshes;
 pub mod multisample;
 pub mod particles;

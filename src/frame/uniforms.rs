@@ -103,6 +103,11 @@ pub mod unit {
     pub const IBL_PREFILTERED: u32 = 22;
     pub const IBL_BRDF: u32 = 23;
     // 24: the cascaded shadow maps' array (src/frame/shadows/cascades.rs).
+    /// The LTC fit tables of the area lights (glsl/lighting/ltc_area_lights.glsl,
+    /// src/frame/ltc_area_lights.rs), read by the forward pass: past IBL's and
+    /// the cascades' units (`ltc_area_lights::check_units`).
+    pub const LTC_1: u32 = 25;
+    pub const LTC_2: u32 = 26;
 }
 
 /// The uniform-block binding point of the `Lights` block (glsl/common/lighting.glsl).

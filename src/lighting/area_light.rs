@@ -21,8 +21,9 @@
 //! seen from behind gives a negative sum: none of its light arrives.
 //!
 //! `monte_carlo_specular` is the reference for the specular term (gloss's
-//! microfacet BRDF integrated over the light). Not done yet: the shader
-//! twin, the specular term through an LTC matrix table, a technique, a scene.
+//! microfacet BRDF integrated over the light); src/lighting/ltc.rs holds the
+//! specular term through the LTC tables, and the GPU side is
+//! src/techniques/lighting/ltc_area_lights.rs.
 
 use glam::DVec3;
 
@@ -44,6 +45,36 @@ impl QuadLight {
     pub fn area(&self) -> f64 {
         let c = &self.corners;
         (c[1] - c[0]).cross(c[3] - c[0]).length()
+    }
+
+    /// A scene's `[[area_lights]]` entry (src/scene/area_lights.rs) in f64.
+    pub fn of(light: &crate::scene::area_lights::AreaLight) -> Self {
+        let [w, h] = light.size;
+        let d = |v: glam::Vec3| v.as_dvec3();
+        QuadLight::rectangle(
+            d(light.center),
+            d(light.normal),
+            d(light.up),
+            (f64::from(w), f64::from(h)),
+        )
+    }
+
+    /// A `width` x `height` rectangle about `center` shining toward
+    /// `normal` (unit), its height along `up` (unit, at right angles to
+    /// `normal`): corners C - T - B, C + T - B, C + T + B, C - T + B with
+    /// B = up height / 2, T = (up x normal) width / 2, so that
+    /// (c1 - c0) x (c3 - c0) = T x B points along `normal`.
+    pub fn rectangle(center: DVec3, normal: DVec3, up: DVec3, (width, height): (f64, f64)) -> Self {
+        let b = up * (0.5 * height);
+        let t = up.cross(normal) * (0.5 * width);
+        QuadLight {
+            corners: [
+                center - t - b,
+                center + t - b,
+                center + t + b,
+                center - t + b,
+            ],
+        }
     }
 }
 

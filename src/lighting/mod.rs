@@ -11,6 +11,7 @@ pub mod area_light;
 pub mod attenuation;
 pub mod bvh;
 pub mod image_based_lighting;
+pub mod ltc;
 pub mod microfacet;
 pub mod shadow_reference;
 pub mod static_lighting;

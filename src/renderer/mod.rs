@@ -112,6 +112,7 @@ impl Renderer {
         )?;
         crate::frame::gbuffer::check_units(gl, scene)?;
         crate::frame::image_based_lighting::check_units(gl, scene)?;
+        crate::frame::ltc_area_lights::check_units(gl, scene)?;
         let clip = unsafe { gl.get_parameter_i32(glow::MAX_CLIP_DISTANCES) } as usize;
         if scene.clip_planes.len() + 1 > clip {
             anyhow::bail!(

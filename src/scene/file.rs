@@ -23,6 +23,8 @@ pub(super) struct SceneFile {
     pub(super) render: RenderFile,
     #[serde(default)]
     pub(super) lights: Vec<LightFile>,
+    #[serde(default)]
+    pub(super) area_lights: Vec<super::area_lights::AreaLightFile>,
     pub(super) light_grid: Option<LightGrid>,
     #[serde(default)]
     pub(super) materials: HashMap<String, MaterialFile>,
@@ -168,6 +170,7 @@ pub(super) struct RenderFile {
     pub(super) sky_first: bool,
     /// Image-based lighting as the ambient term (src/frame/image_based_lighting.rs).
     pub(super) ibl: bool,
+    pub(super) area_lights: bool,
     pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
 }
 
@@ -222,6 +225,7 @@ impl Default for RenderFile {
             light_maps: true,
             sky_first: false,
             ibl: false,
+            area_lights: true,
             gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
         }
     }
@@ -299,16 +303,14 @@ pub(super) struct MaterialFile {
     pub(super) diffuse_texture: Option<String>,
     /// A tangent-space normal map (notes 01 §8.4), loaded as linear data.
     pub(super) normal_map: Option<String>,
-    /// A height map (white high), for parallax mapping; how deep its relief
-    /// is, in texture uv units.
+    /// A height map (white high), for parallax mapping; its relief's depth in uv units.
     pub(super) height_map: Option<String>,
     pub(super) height_scale: Option<f32>,
     #[serde(default = "spec_default")]
     pub(super) specular: [f32; 3],
     #[serde(default = "shininess_default")]
     pub(super) shininess: f32,
-    /// "phong" (the default) or "microfacet", with notes 03's triple
-    /// (src/scene/material.rs).
+    /// "phong" (the default) or "microfacet", with notes 03's triple (src/scene/material.rs).
     pub(super) model: Option<super::settings::Model>,
     pub(super) alpha: Option<f32>,
     pub(super) eta: Option<f32>,
@@ -326,8 +328,7 @@ pub(super) struct MaterialFile {
     pub(super) reflectivity: f32,
     /// Overrides `render.depth_func` for this material's objects.
     pub(super) depth_func: Option<DepthFunc>,
-    /// The faces its objects cull: back (the default), front,
-    /// front_and_back, none.
+    /// The faces its objects cull: back (the default), front, front_and_back, none.
     #[serde(default)]
     pub(super) cull: Option<Cull>,
     /// Which winding is a front face: "ccw" (the default) or "cw".

@@ -22,8 +22,8 @@ pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
 pub use instancing::{INSTANCING, NORMAL_LENGTH, SHOW_NORMALS};
 pub use lighting::{
-    ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
-    STENCIL_VOLUMES, TILE_SIZE,
+    ACCUMULATION, AREA_LIGHTS, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD,
+    GBUFFER_ENCODING, STENCIL_VOLUMES, TILE_SIZE,
 };
 pub use parallax::{PARALLAX, PARALLAX_LAYERS, PARALLAX_SHADOWS, PARALLAX_UV};
 pub use sky::{IBL, SKY_FIRST};
@@ -339,6 +339,7 @@ pub static ALL: &[&Knob] = &[
     &LIGHT_MAPS,
     &SKY_FIRST,
     &IBL,
+    &AREA_LIGHTS,
     &POST_CHAIN,
     &MSAA,
     &SKINNING_ON,
@@ -355,6 +356,7 @@ pub type AppliesTo = fn(&super::Scene) -> bool;
 pub static SWITCHES: &[(&Knob, AppliesTo)] = &[
     (&OUTLINES, |s| s.outlines.is_some()),
     (&SHOW_NORMALS, |s| s.opaque_objects() > 0),
+    (&AREA_LIGHTS, |s| !s.area_lights.is_empty()),
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

@@ -13,6 +13,7 @@
 mod alpha_test;
 pub mod ambient_occlusion;
 pub mod animation;
+pub mod area_lights;
 mod billboards;
 pub mod bloom;
 pub mod camera_limits;
@@ -234,6 +235,8 @@ pub struct Scene {
     pub views: Vec<SplitView>,
     pub render: RenderSettings,
     pub lights: Vec<Light>,
+    /// `[[area_lights]]`: rectangles lit with LTC (forward path).
+    pub area_lights: Vec<area_lights::AreaLight>,
     /// The `[light_grid]` that generated the last `grid_lights` lights.
     pub light_grid: Option<LightGrid>,
     /// How many of `lights` a `[light_grid]` generated (None: the scene has none).

@@ -189,6 +189,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         light_maps: r.light_maps,
         sky_first: r.sky_first,
         ibl: r.ibl,
+        area_lights: r.area_lights,
         ambient_occlusion: super::ambient_occlusion::resolve(f.ambient_occlusion.as_ref())?,
         gbuffer_encoding: r.gbuffer_encoding,
     })
@@ -306,6 +307,8 @@ pub struct RenderSettings {
     /// image-based lighting: irradiance, prefiltered specular, split-sum
     /// table) instead of the constant `ambient` (src/frame/image_based_lighting.rs).
     pub ibl: bool,
+    /// Shade and draw the `[[area_lights]]` (LTC, lighting/ltc_area_lights.rs).
+    pub area_lights: bool,
     /// `[ambient_occlusion]`: SSAO on the G-buffer paths (notes 03, Ambient
     /// Light; src/scene/ambient_occlusion.rs). None: the ambient term unoccluded.
     pub ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusion>,

@@ -87,6 +87,7 @@ pub(super) fn resolve(mut f: SceneFile, path: &Path) -> Result<Scene> {
         views,
         render,
         lights,
+        area_lights: super::area_lights::resolve(&f.area_lights)?,
         materials,
         objects,
         sprites,

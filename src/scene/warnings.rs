@@ -25,6 +25,7 @@ impl Scene {
         self.camera_warnings(&mut w);
         self.skybox_warnings(&mut w);
         w.extend(self.file_warnings.iter().cloned());
+        w.extend(super::area_lights::warnings(self));
         if self.tessellation.is_some() && self.render.path != RenderPath::Forward {
             w.push(format!(
                 "[tessellation] is not drawn on the {} path: the tessellated terrain is a forward-path pass (render.path = \"forward\" draws it)",

@@ -41,6 +41,8 @@ pub static ALL: &[&Technique] = &[
     &lighting::forward::FORWARD,
     // Into forward's target, the objects with a height map that forward skips.
     &lighting::parallax_mapping::PARALLAX_MAPPING,
+    // The area lights' rectangles, over the world forward shaded with them.
+    &lighting::ltc_area_lights::LTC_AREA_LIGHTS,
     &vertex_geometry::tessellation::TESSELLATION,
     &deferred::gbuffer::GBUFFER,
     &deferred::deferred_shading::DEFERRED_SHADING,

@@ -7,6 +7,7 @@ mod common;
 mod bump_mapping;
 mod forward;
 mod gouraud;
+mod ltc_area_lights;
 mod microfacet;
 mod parallax_mapping;
 mod static_lighting;

@@ -31,6 +31,7 @@ fn every_key_the_docs_name_does_what_the_demo_does_with_it() {
             ("render.path", KeyEffect::Choose(i)) => format!("KeyAction::Path({i})"),
             ("render.shading", KeyEffect::Next) => "KeyAction::NextShading".to_string(),
             ("render.stencil_volumes", KeyEffect::Toggle) => "KeyAction::ToggleStencil".to_string(),
+            ("render.area_lights", KeyEffect::Toggle) => "KeyAction::ToggleAreaLights".to_string(),
             other => panic!("{}: the demo has no action {other:?}", k.key),
         };
         assert_eq!(
@@ -75,9 +76,15 @@ fn every_key_the_docs_name_does_what_the_demo_does_with_it() {
                 assert_eq!(r.shading, next);
             }
             KeyEffect::Toggle => {
-                let before = r.stencil_volumes;
+                // The field the demo's action flips (src/demo/actions.rs).
+                let field = |r: &gloss::scene::RenderSettings| match k.knob.key {
+                    "render.stencil_volumes" => r.stencil_volumes,
+                    "render.area_lights" => r.area_lights,
+                    other => panic!("{other}: which field does the demo flip?"),
+                };
+                let before = field(&r);
                 (k.knob.set)(&mut r, Value::Bool(!before));
-                assert_ne!(r.stencil_volumes, before);
+                assert_ne!(field(&r), before);
             }
         }
     }
@@ -85,7 +92,7 @@ fn every_key_the_docs_name_does_what_the_demo_does_with_it() {
     for c in "abcdefghijklmnopqrstuvwxyz0123456789".chars() {
         let c = c.to_string();
         let Some(a) = arm(&source, &c) else { continue };
-        if ["Path(", "NextShading", "ToggleStencil"]
+        if ["Path(", "NextShading", "ToggleStencil", "ToggleAreaLights"]
             .iter()
             .any(|x| a.contains(x))
         {

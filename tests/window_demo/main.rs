@@ -7,6 +7,7 @@
 //! under `timeout`. Needs `xvfb-run` and `xdotool` (.ci/run installs them);
 //! GLOSS_SKIP_WINDOW_TEST=1 skips these tests where a machine cannot have them.
 
+mod area_lights;
 mod input;
 mod layout;
 mod probe;

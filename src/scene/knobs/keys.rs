@@ -4,7 +4,7 @@
 //! technique's keys from here; tests/trace/try_it.rs checks every entry
 //! against the demo's own handling of the key, so the two cannot drift.
 
-use super::{Knob, PATH, SHADING, STENCIL_VOLUMES};
+use super::{AREA_LIGHTS, Knob, PATH, SHADING, STENCIL_VOLUMES};
 
 /// What pressing the key does to its knob.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,4 +36,5 @@ pub static KNOB_KEYS: &[KnobKey] = &[
     k("4", &PATH, KeyEffect::Choose(3)),
     k("G", &SHADING, KeyEffect::Next),
     k("V", &STENCIL_VOLUMES, KeyEffect::Toggle),
+    k("L", &AREA_LIGHTS, KeyEffect::Toggle),
 ];

@@ -25,6 +25,7 @@ use crate::frame::draw_list::DrawList;
 use crate::frame::environment::Environment;
 use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
+use crate::frame::ltc_area_lights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
 use crate::frame::shadows;
@@ -203,6 +204,8 @@ impl RunPasses for Forward {
             f.draws.environment.bind(gl, p);
             // Image-based lighting's maps, the ambient term with render.ibl.
             image_based_lighting::bind(gl, p, f.draws.environment.ibl.as_ref());
+            // The area lights and their LTC tables (lighting/ltc_area_lights.rs).
+            ltc_area_lights::bind(gl, p, f.scene, f.draws.ltc.as_ref());
             // Texture coordinates and vertex colours perspective-correct or
             // affine (notes 01 §4.1, §5.1).
             let affine = f.scene.render.interpolation == Interpolation::Affine;
@@ -258,6 +261,7 @@ impl RunPasses for Forward {
             DrawList::unbind_textures(gl);
             Environment::unbind(gl);
             image_based_lighting::unbind(gl, f.draws.environment.ibl.as_ref());
+            ltc_area_lights::unbind(gl, f.draws.ltc.as_ref());
             gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.active_texture(glow::TEXTURE0);

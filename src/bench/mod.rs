@@ -335,7 +335,7 @@ fn measure(
             gpu.push(q.result_ns() as f64 / 1e6);
         }
         frame.push(r.last_times.frame_ms);
-        add_pass_times(&mut passes, &r.last_times.passes);
+        add_pass_times(&mut passes, r.last_times.titled());
     }
     let image = r.read_image();
     let fragments = overdraw::fragments_per_pixel(ctx, &mut r, &camera)?;
@@ -371,11 +371,16 @@ fn measure(
     })
 }
 
-/// Add one frame's pass times to `passes`: a pass that runs several times
-/// in a frame (the world drawn once per mirror view) counts once, summed.
-pub(crate) fn add_pass_times(passes: &mut Vec<(String, Vec<f64>)>, frame: &[(&'static str, f64)]) {
+/// Add one frame's pass times to `passes`: passes of one name in a frame
+/// count once, summed (with `PassTimes::titled`, the names the plan gives:
+/// a mirror's reflection or a cube face is its own row; with
+/// `PassTimes::named`, the techniques' names: all of one kind summed).
+pub(crate) fn add_pass_times<'a>(
+    passes: &mut Vec<(String, Vec<f64>)>,
+    frame: impl IntoIterator<Item = (&'a str, f64)>,
+) {
     let mut sums: Vec<(&str, f64)> = Vec::new();
-    for &(name, ms) in frame {
+    for (name, ms) in frame {
         match sums.iter_mut().find(|(n, _)| *n == name) {
             Some((_, t)) => *t += ms,
             None => sums.push((name, ms)),

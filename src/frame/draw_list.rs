@@ -7,6 +7,7 @@
 
 use crate::frame::alpha_maps::with_alpha_map;
 use crate::frame::billboards::BillboardDraws;
+use crate::frame::clusters::{Bins, Grid};
 use crate::frame::culling::{CullStats, CullTree, mesh_bounds};
 use crate::frame::skins::SkinDraw;
 use crate::frame::texturing::TextureSamplers;
@@ -21,7 +22,7 @@ use crate::scene::texturing::Texturing;
 use crate::scene::{Cull, DepthFunc, MeshSource, Scene, Winding};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
 use std::path::PathBuf;
 
@@ -109,6 +110,9 @@ pub struct DrawList {
     /// What the shadow passes' culling kept of the casters, summed over
     /// the frame's shadow-map faces (the shadow technique adds to it).
     pub shadow_cull: Cell<CullStats>,
+    /// The light lists the tiled pass last uploaded for the camera's own
+    /// view, with their grid: what the pixel probe reads back.
+    pub tiled_lists: RefCell<Option<(Grid, Bins)>>,
 }
 
 impl DrawList {
@@ -231,6 +235,7 @@ impl DrawList {
             parents: scene.objects.iter().map(|o| o.parent).collect(),
             last_cull: Cell::default(),
             shadow_cull: Cell::default(),
+            tiled_lists: RefCell::default(),
         };
         list.pose_skins(scene);
         list.grow_cull_tree();

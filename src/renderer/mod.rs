@@ -6,14 +6,19 @@
 mod output;
 mod passes;
 mod probe;
+mod probe_pcf;
+mod probe_read;
 mod probe_shadow;
 mod probe_text;
+mod probe_tiles;
 mod programs;
 
 use output::target_descs;
 pub use output::{Output, stencil_color, stencil_image};
 pub use probe::{MAGNIFIER_RADIUS, Probe, TargetValue};
+pub use probe_pcf::Filtered;
 pub use probe_shadow::{FACES, ShadowProbe};
+pub use probe_tiles::TileLists;
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_lights_fit, max_lights};
@@ -365,8 +370,9 @@ impl Renderer {
             };
             let technique = self.techniques[pass.technique].as_deref();
             let technique = technique.expect("built for its pass");
-            passes::run_pass(i + 1, pass, technique, &frame, self.debug_groups);
-            timer.mark(pass.name);
+            let title = self.plan.title(i);
+            passes::run_pass(i + 1, pass, &title, technique, &frame, self.debug_groups);
+            timer.mark(pass.name, title);
             after_pass(pass);
         }
         self.last_times = timer.finish();

@@ -42,6 +42,7 @@ pub mod shadows;
 mod skinning;
 pub mod ssao;
 mod stats;
+pub(crate) use stats::add_pass_times;
 mod table;
 mod variants;
 
@@ -369,29 +370,6 @@ fn measure(
         fragments_per_pixel: Some(fragments),
         ..row
     })
-}
-
-/// Add one frame's pass times to `passes`: passes of one name in a frame
-/// count once, summed (with `PassTimes::titled`, the names the plan gives:
-/// a mirror's reflection or a cube face is its own row; with
-/// `PassTimes::named`, the techniques' names: all of one kind summed).
-pub(crate) fn add_pass_times<'a>(
-    passes: &mut Vec<(String, Vec<f64>)>,
-    frame: impl IntoIterator<Item = (&'a str, f64)>,
-) {
-    let mut sums: Vec<(&str, f64)> = Vec::new();
-    for (name, ms) in frame {
-        match sums.iter_mut().find(|(n, _)| *n == name) {
-            Some((_, t)) => *t += ms,
-            None => sums.push((name, ms)),
-        }
-    }
-    for (name, ms) in sums {
-        match passes.iter_mut().find(|(n, _)| n == name) {
-            Some((_, v)) => v.push(ms),
-            None => passes.push((name.to_string(), vec![ms])),
-        }
-    }
 }
 
 /// Creates `path`'s parent directory (for the CSV file and the plot).

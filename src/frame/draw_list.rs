@@ -7,7 +7,6 @@
 
 use crate::frame::alpha_maps::with_alpha_map;
 use crate::frame::billboards::BillboardDraws;
-use crate::frame::clusters::{Bins, Grid};
 use crate::frame::culling::{CullStats, CullTree, mesh_bounds};
 use crate::frame::skins::SkinDraw;
 use crate::frame::texturing::TextureSamplers;
@@ -104,15 +103,12 @@ pub struct DrawList {
     /// (src/frame/culling.rs), and each object's parent.
     cull_tree: CullTree,
     parents: Vec<Option<usize>>,
-    /// What the camera's last culled walk did (`Frame::opaque_order` sets
-    /// it; the demo and the bench show it).
+    /// The camera's last culled walk (set by `Frame::opaque_order`).
     pub last_cull: Cell<CullStats>,
-    /// What the shadow passes' culling kept of the casters, summed over
-    /// the frame's shadow-map faces (the shadow technique adds to it).
+    /// The shadow passes' culling of the casters, summed over their faces.
     pub shadow_cull: Cell<CullStats>,
-    /// The light lists the tiled pass last uploaded for the camera's own
-    /// view, with their grid: what the pixel probe reads back.
-    pub tiled_lists: RefCell<Option<(Grid, Bins)>>,
+    /// The tiled pass's last lists for the camera's view (the pixel probe's).
+    pub tiled_lists: RefCell<Option<(super::clusters::Grid, super::clusters::Bins)>>,
 }
 
 impl DrawList {

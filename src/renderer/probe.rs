@@ -17,7 +17,7 @@
 use super::Renderer;
 use super::probe_read::{read_color, read_depths, read_resolved, read_stencil, read_texture};
 use super::probe_shadow::{ShadowProbe, probe_shadows};
-use super::probe_tiles::TileLists;
+pub use super::probe_tiles::TileLists;
 use crate::frame::gbuffer::NORMAL;
 use crate::frame::targets::Depth;
 use crate::gl::framebuffer::Framebuffer;

@@ -10,7 +10,7 @@
 //! the Poisson disc; GL_LINEAR for `hardware`, the four nearest texels'
 //! comparisons blended bilinearly (GL 3.3 §3.8.16). Outside a 2D map the
 //! border depth 1.0 (GL_CLAMP_TO_BORDER); a cube's tap picks its face as
-//! GL does (probe_shadow.rs's `cube_face`) and clamps to the face's edge
+//! GL does (`cube_face`) and clamps to the face's edge
 //! (GL_CLAMP_TO_EDGE). A bilinear lookup within half a texel of a cube
 //! face's edge is where this differs from a GPU that filters across faces
 //! (GL_TEXTURE_CUBE_MAP_SEAMLESS): said in the read-out.
@@ -138,7 +138,7 @@ pub fn filter_cube(
         } else {
             d + (offset.x * u + offset.y * v) * step
         };
-        let (face, uv) = super::probe_shadow::cube_face(dir);
+        let (face, uv) = cube_face(dir);
         if linear {
             let half = 0.5 / res as f32;
             near_face_edge |= uv.min_element() < half || uv.max_element() > 1.0 - half;
@@ -153,6 +153,34 @@ pub fn filter_cube(
         taps,
         near_face_edge,
     }
+}
+
+/// The cube face direction `d` points into and where on it (s, t in
+/// 0..1), as GL picks them (GL 3.3 §3.8.10, table 3.21).
+pub fn cube_face(d: Vec3) -> (usize, Vec2) {
+    let a = d.abs();
+    let (face, sc, tc, ma) = if a.x >= a.y && a.x >= a.z {
+        if d.x >= 0.0 {
+            (0, -d.z, -d.y, a.x)
+        } else {
+            (1, d.z, -d.y, a.x)
+        }
+    } else if a.y >= a.z {
+        if d.y >= 0.0 {
+            (2, d.x, d.z, a.y)
+        } else {
+            (3, d.x, -d.z, a.y)
+        }
+    } else if d.z >= 0.0 {
+        (4, d.x, -d.y, a.z)
+    } else {
+        (5, -d.x, -d.y, a.z)
+    };
+    let ma = ma.max(1e-20);
+    (
+        face,
+        Vec2::new(0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0)),
+    )
 }
 
 /// One sampler lookup with comparison at `uv`: the texel it falls in
@@ -209,6 +237,7 @@ mod tests {
         assert!((b - 2.0 / 3.0).abs() < 1e-6, "{b}");
         // Past the map's edge: the border's 1.0, lit.
         let out = Vec3::new(-0.5, 0.5, 0.9);
-        assert_eq!(filter_2d(Pcf::Box5, out, res, &mut stored).visibility, 1.0);
+        let v = filter_2d(Pcf::Box5, out, res, &mut stored).visibility;
+        assert!((v - 1.0).abs() < 1e-6, "{v}");
     }
 }

@@ -13,7 +13,7 @@
 //! by, part lit in a penumbra.
 
 use super::Renderer;
-use super::probe_pcf::{Filtered, filter_2d, filter_cube};
+use super::probe_pcf::{Filtered, cube_face, filter_2d, filter_cube};
 use crate::frame::shadows::{CUBE, ORTHOGRAPHIC};
 use crate::gl::texture::bytemuck_f32;
 use crate::math::shadow as matrices;
@@ -128,34 +128,6 @@ pub(super) fn probe_shadows(r: &Renderer, p: Vec3, n: Vec3) -> Vec<ShadowProbe> 
         out.push(probe);
     }
     out
-}
-
-/// The cube face direction `d` points into and where on it (s, t in
-/// 0..1), as GL picks them (GL 3.3 §3.8.10, table 3.21).
-pub fn cube_face(d: Vec3) -> (usize, Vec2) {
-    let a = d.abs();
-    let (face, sc, tc, ma) = if a.x >= a.y && a.x >= a.z {
-        if d.x >= 0.0 {
-            (0, -d.z, -d.y, a.x)
-        } else {
-            (1, d.z, -d.y, a.x)
-        }
-    } else if a.y >= a.z {
-        if d.y >= 0.0 {
-            (2, d.x, d.z, a.y)
-        } else {
-            (3, d.x, -d.z, a.y)
-        }
-    } else if d.z >= 0.0 {
-        (4, d.x, -d.y, a.z)
-    } else {
-        (5, -d.x, -d.y, a.z)
-    };
-    let ma = ma.max(1e-20);
-    (
-        face,
-        Vec2::new(0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0)),
-    )
 }
 
 /// The texel (column, row from the bottom) that `uv` falls in.

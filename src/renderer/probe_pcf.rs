@@ -19,7 +19,8 @@ use crate::scene::Pcf;
 use glam::{Vec2, Vec3};
 
 /// glsl/common/shadow.glsl's `POISSON`: sixteen points of a Poisson disc
-/// in the unit circle, scaled there by 2.5 texels.
+/// in the unit circle, scaled there by 2.5 texels (its digits as written).
+#[allow(clippy::excessive_precision)]
 const POISSON: [[f32; 2]; 16] = [
     [-0.942_016_24, -0.399_062_16],
     [0.945_586_09, -0.768_907_25],

@@ -12,6 +12,7 @@ uniform samplerCube u_cube_map;
 uniform sampler2D u_layout;
 uniform int u_pass;
 uniform bool u_cube;
+uniform int u_face;      // one face of the cube alone (0..5, GL's order), -1: the cross
 uniform vec4 u_rect;
 uniform float u_min;
 uniform float u_max;
@@ -70,8 +71,17 @@ void main() {
     float depth;
     if (u_cube) {
         vec2 g = uv * vec2(4.0, 3.0);
+        ivec2 cell = ivec2(floor(g));
+        vec2 p = fract(g) * 2.0 - 1.0;
+        if (u_face >= 0) {
+            // The face's cell of the cross (+x, -x, +y, -y, +z, -z), filling the square.
+            const ivec2 FACE_CELL[6] = ivec2[](ivec2(2, 1), ivec2(0, 1), ivec2(1, 2),
+                                               ivec2(1, 0), ivec2(1, 1), ivec2(3, 1));
+            cell = FACE_CELL[u_face];
+            p = uv * 2.0 - 1.0;
+        }
         vec3 d;
-        if (!cross_direction(ivec2(floor(g)), fract(g) * 2.0 - 1.0, d)) {
+        if (!cross_direction(cell, p, d)) {
             discard;
         }
         depth = texture(u_cube_map, d).r;

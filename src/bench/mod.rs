@@ -42,6 +42,7 @@ pub mod shadows;
 mod skinning;
 pub mod ssao;
 mod stats;
+pub(crate) use stats::add_pass_times;
 mod table;
 mod variants;
 
@@ -335,7 +336,7 @@ fn measure(
             gpu.push(q.result_ns() as f64 / 1e6);
         }
         frame.push(r.last_times.frame_ms);
-        add_pass_times(&mut passes, &r.last_times.passes);
+        add_pass_times(&mut passes, r.last_times.titled());
     }
     let image = r.read_image();
     let fragments = overdraw::fragments_per_pixel(ctx, &mut r, &camera)?;
@@ -369,24 +370,6 @@ fn measure(
         fragments_per_pixel: Some(fragments),
         ..row
     })
-}
-
-/// Add one frame's pass times to `passes`: a pass that runs several times
-/// in a frame (the world drawn once per mirror view) counts once, summed.
-pub(crate) fn add_pass_times(passes: &mut Vec<(String, Vec<f64>)>, frame: &[(&'static str, f64)]) {
-    let mut sums: Vec<(&str, f64)> = Vec::new();
-    for &(name, ms) in frame {
-        match sums.iter_mut().find(|(n, _)| *n == name) {
-            Some((_, t)) => *t += ms,
-            None => sums.push((name, ms)),
-        }
-    }
-    for (name, ms) in sums {
-        match passes.iter_mut().find(|(n, _)| n == name) {
-            Some((_, v)) => v.push(ms),
-            None => passes.push((name.to_string(), vec![ms])),
-        }
-    }
 }
 
 /// Creates `path`'s parent directory (for the CSV file and the plot).

@@ -40,7 +40,7 @@ fn post_times(ctx: &Headless, args: &BenchArgs, scene: &Scene) -> Result<Vec<Pos
     for f in 0..args.warmup + args.frames.max(1) {
         r.render(&scene.camera)?;
         if f >= args.warmup {
-            add_pass_times(&mut passes, &r.last_times.passes);
+            add_pass_times(&mut passes, r.last_times.named());
         }
     }
     // The post passes, by name, with the steps their entries take.

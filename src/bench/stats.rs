@@ -55,6 +55,29 @@ fn percentile(v: &[f64], p: f64) -> f64 {
     v[lo] + (v[hi] - v[lo]) * t
 }
 
+/// Add one frame's pass times to `passes`: passes of one name in a frame
+/// count once, summed (with `PassTimes::titled`, the names the plan gives:
+/// a mirror's reflection or a cube face is its own row; with
+/// `PassTimes::named`, the techniques' names: all of one kind summed).
+pub(crate) fn add_pass_times<'a>(
+    passes: &mut Vec<(String, Vec<f64>)>,
+    frame: impl IntoIterator<Item = (&'a str, f64)>,
+) {
+    let mut sums: Vec<(&str, f64)> = Vec::new();
+    for (name, ms) in frame {
+        match sums.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, t)) => *t += ms,
+            None => sums.push((name, ms)),
+        }
+    }
+    for (name, ms) in sums {
+        match passes.iter_mut().find(|(n, _)| n == name) {
+            Some((_, v)) => v.push(ms),
+            None => passes.push((name.to_string(), vec![ms])),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

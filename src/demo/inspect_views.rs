@@ -108,7 +108,7 @@ impl View {
     /// light's map when its resolution changes.
     pub fn same_as(&self, other: &View) -> bool {
         let key = |v: &View| {
-            let shadow = v.shadow.map(|s| s.light);
+            let shadow = v.shadow.map(|s| (s.light, s.face));
             (
                 v.target,
                 v.attachment,
@@ -206,7 +206,11 @@ pub fn views(plan: &FramePlan, has_volumes: bool, shadows: &[ShadowView]) -> Vec
         shadow: Some(*s),
         ..View::of("shadow map", "depth", None, depth_map::FORMAT, Mode::Depth)
     };
-    let mut v: Vec<View> = shadows.iter().map(map).collect();
+    // A cube's cross, then each of its faces alone (one per face pass).
+    let maps = shadows
+        .iter()
+        .flat_map(|s| std::iter::once(*s).chain(s.faces()));
+    let mut v: Vec<View> = maps.map(|s| map(&s)).collect();
     for t in &plan.targets {
         // A multisampled target (MSAA) cannot be sampled as a sampler2D: its
         // resolved image is the world's target, shown with it.

@@ -30,6 +30,7 @@
 //! to show a window's worth of pixels; here only the layout, the view's
 //! size, is read back.
 
+use crate::frame::pass::CUBE_FACES;
 use crate::frame::shadows::{Caster, ShadowMaps};
 use crate::geometry;
 use crate::gl::Gl;
@@ -54,6 +55,9 @@ pub struct ShadowView {
     pub kind: LightKind,
     /// Texels along a side (of each face).
     pub resolution: u32,
+    /// One face of a point light's cube (0..6: +X, -X, +Y, -Y, +Z, -Z, as
+    /// its shadow pass names it) instead of the whole cross; None otherwise.
+    pub face: Option<usize>,
 }
 
 impl ShadowView {
@@ -67,8 +71,23 @@ impl ShadowView {
                 light: c.light,
                 kind: kind(c.light),
                 resolution: c.shadow.resolution,
+                face: None,
             })
             .collect()
+    }
+
+    /// A cube's six faces, each its own view (the output of its face's
+    /// pass, "shadow map (light 0, face +X)"); none for a 2D map.
+    pub fn faces(&self) -> Vec<ShadowView> {
+        match self.cube() && self.face.is_none() {
+            true => (0..CUBE_FACES.len())
+                .map(|f| ShadowView {
+                    face: Some(f),
+                    ..*self
+                })
+                .collect(),
+            false => Vec::new(),
+        }
     }
 
     pub fn cube(&self) -> bool {
@@ -79,10 +98,10 @@ impl ShadowView {
     pub fn label(&self) -> String {
         let kind = format!("{:?}", self.kind).to_lowercase();
         let (n, light) = (self.resolution, self.light);
-        let (stored, layout) = if self.cube() {
-            ("distance / far", "; cross +y / -x +z +x -z / -y")
-        } else {
-            ("depth", "")
+        let (stored, layout) = match (self.cube(), self.face) {
+            (true, Some(f)) => ("distance / far", format!("; face {} alone", CUBE_FACES[f])),
+            (true, None) => ("distance / far", "; cross +y / -x +z +x -z / -y".into()),
+            (false, _) => ("depth", String::new()),
         };
         format!(
             "shadow map: light {light} ({n}², {kind}): {stored}, min..max below 1 as black..white, 1 blue{layout}"
@@ -167,7 +186,9 @@ impl ShadowViews {
             .find(|((c, _), v)| c.light == view.light && v.is_some())
             .map(|(m, _)| m);
         let cube = map.is_some_and(|(c, _)| c.cube);
-        let rect = layout_rect(cube, w, h).map(|v| v as f32);
+        // One face of the cube: a square, like a 2D map.
+        let face = view.face.filter(|_| cube);
+        let rect = layout_rect(cube && face.is_none(), w, h).map(|v| v as f32);
         unsafe {
             // 1. The layout: raw depth, -1 outside it.
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(layout.id));
@@ -188,6 +209,7 @@ impl ShadowViews {
                 gl.bind_sampler(unit, Some(self.sampler));
                 p.set_i32("u_pass", 0);
                 p.set_bool("u_cube", cube);
+                p.set_i32("u_face", face.map_or(-1, |f| f as i32));
                 p.set_vec4("u_rect", Vec4::from(rect));
                 self.fullscreen.draw();
                 gl.bind_sampler(unit, None);

@@ -21,7 +21,7 @@ use crate::scene::texturing::Texturing;
 use crate::scene::{Cull, DepthFunc, MeshSource, Scene, Winding};
 use anyhow::Result;
 use glam::{Mat3, Mat4, Vec3};
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
 use std::path::PathBuf;
 
@@ -103,11 +103,12 @@ pub struct DrawList {
     /// The objects' boxes through the graph, for culling (src/frame/culling.rs); each one's parent.
     cull_tree: CullTree,
     parents: Vec<Option<usize>>,
-    /// What the camera's last culled walk did (`Frame::opaque_order` sets it; demo, bench show it).
+    /// The camera's last culled walk (set by `Frame::opaque_order`).
     pub last_cull: Cell<CullStats>,
-    /// What the shadow passes' culling kept of the casters, summed over
-    /// the frame's shadow-map faces (the shadow technique adds to it).
+    /// The shadow passes' culling of the casters, summed over their faces.
     pub shadow_cull: Cell<CullStats>,
+    /// The tiled pass's last lists for the camera's view (the pixel probe's).
+    pub tiled_lists: RefCell<Option<(super::clusters::Grid, super::clusters::Bins)>>,
 }
 
 impl DrawList {
@@ -231,6 +232,7 @@ impl DrawList {
             parents: scene.objects.iter().map(|o| o.parent).collect(),
             last_cull: Cell::default(),
             shadow_cull: Cell::default(),
+            tiled_lists: RefCell::default(),
         };
         list.pose_skins(scene);
         list.grow_cull_tree();

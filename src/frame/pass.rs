@@ -37,7 +37,17 @@ pub struct Pass {
     /// The lighting variant its shader is compiled for, in words
     /// (src/frame/variant.rs); None for a pass without one.
     pub variant: Option<String>,
+    /// The cube face it draws (0..6: +X, -X, +Y, -Y, +Z, -Z, GL's order),
+    /// for a point light's shadow drawn one face per pass; `ALL_FACES`
+    /// for a pass that reaches all six at once (gl_Layer); None otherwise.
+    pub face: Option<usize>,
 }
+
+/// The cube faces as GL orders them (GL_TEXTURE_CUBE_MAP_POSITIVE_X + i).
+pub const CUBE_FACES: [&str; 6] = ["+X", "-X", "+Y", "-Y", "+Z", "-Z"];
+
+/// `Pass::face` of a pass that draws all six faces of a cube in one go.
+pub const ALL_FACES: usize = 6;
 
 impl Pass {
     /// A pass of the technique in file `code` (step 0).
@@ -61,6 +71,7 @@ impl Pass {
             needs_depth: true,
             reads: Vec::new(),
             variant: None,
+            face: None,
         }
     }
 
@@ -103,6 +114,15 @@ impl Pass {
     /// The same pass, drawing into mip level `level` of its target.
     pub fn level(self, level: u32) -> Pass {
         Pass { level, ..self }
+    }
+
+    /// The same pass, drawing cube face `face` (an index of `CUBE_FACES`,
+    /// or `ALL_FACES`).
+    pub fn face(self, face: usize) -> Pass {
+        Pass {
+            face: Some(face),
+            ..self
+        }
     }
 
     /// The same pass, drawing for view `view`.

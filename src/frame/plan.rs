@@ -11,6 +11,7 @@
 use crate::frame::lights::FrameLights;
 // Where the plan's passes are defined (below the techniques that make them);
 // re-exported because a pass is read as part of the plan.
+use crate::frame::pass::CUBE_FACES;
 pub use crate::frame::pass::Pass;
 use crate::frame::post;
 use crate::frame::targets::{TargetDesc, size_name};
@@ -182,13 +183,21 @@ impl FramePlan {
 
     /// Pass `i` named by what it draws, as the timings, the demo's
     /// inspector and `gloss plan` show it: "shadow map (light 0)",
-    /// "forward (reflection in mirror 'glass')", "forward (view 'top' ...)".
+    /// "shadow map (light 1, face +X)" (a point light's cube, one pass per
+    /// face), "shadow map (light 1, six faces by gl_Layer)", "forward
+    /// (reflection in mirror 'glass')", "forward (view 'top' ...)".
     pub fn title(&self, i: usize) -> String {
         let Some(p) = self.passes.get(i) else {
             return String::new();
         };
         if p.name == "shadow map" {
-            return format!("shadow map (light {})", p.item);
+            return match p.face {
+                Some(f) if f < CUBE_FACES.len() => {
+                    format!("shadow map (light {}, face {})", p.item, CUBE_FACES[f])
+                }
+                Some(_) => format!("shadow map (light {}, six faces by gl_Layer)", p.item),
+                None => format!("shadow map (light {})", p.item),
+            };
         }
         match self.views.get(p.view) {
             Some(v) if p.view > 0 && v.name.starts_with("in ") => {

@@ -13,7 +13,12 @@ use std::time::Instant;
 /// where `gpu` is not empty). Only when `Renderer::timing` is on.
 #[derive(Clone, Debug, Default)]
 pub struct PassTimes {
+    /// Each pass's technique name ("shadow map") and time (ms), in frame order.
     pub passes: Vec<(&'static str, f64)>,
+    /// Each pass named by what it draws, as `gloss plan` names it
+    /// (`FramePlan::title`: "shadow map (light 1, face +X)"), one per entry
+    /// of `passes`.
+    pub titles: Vec<String>,
     /// Per pass, from GL_TIMESTAMP queries (ms); empty where not measured.
     pub gpu: Vec<f64>,
     pub frame_ms: f64,
@@ -31,6 +36,16 @@ impl PassTimes {
             .filter(|(n, _)| *n == name)
             .map(|(_, ms)| ms)
             .sum()
+    }
+
+    /// Each pass's time under its title (`titles`), in frame order.
+    pub fn titled(&self) -> impl Iterator<Item = (&str, f64)> {
+        (self.titles.iter().zip(&self.passes)).map(|(t, (_, ms))| (t.as_str(), *ms))
+    }
+
+    /// Each pass's time under its technique's name for it, in frame order.
+    pub fn named(&self) -> impl Iterator<Item = (&str, f64)> {
+        self.passes.iter().map(|&(n, ms)| (n, ms))
     }
 }
 
@@ -75,9 +90,9 @@ impl<'a> PassTimer<'a> {
         }
     }
 
-    /// The pass `name` has been issued: note its GPU time stamp, wait for
-    /// it and note its CPU time.
-    pub fn mark(&mut self, name: &'static str) {
+    /// The pass `name` (titled `title`) has been issued: note its GPU time
+    /// stamp, wait for it and note its CPU time.
+    pub fn mark(&mut self, name: &'static str, title: String) {
         if !self.on {
             return;
         }
@@ -92,6 +107,7 @@ impl<'a> PassTimer<'a> {
         self.times
             .passes
             .push((name, (now - self.last).as_secs_f64() * 1000.0));
+        self.times.titles.push(title);
         self.last = now;
     }
 

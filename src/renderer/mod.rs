@@ -6,14 +6,17 @@
 mod output;
 mod passes;
 mod probe;
+mod probe_pcf;
+mod probe_read;
 mod probe_shadow;
 mod probe_text;
+mod probe_tiles;
 mod programs;
 
 use output::target_descs;
 pub use output::{Output, stencil_color, stencil_image};
-pub use probe::{MAGNIFIER_RADIUS, Probe, TargetValue};
-pub use probe_shadow::{FACES, ShadowProbe};
+pub use probe::{MAGNIFIER_RADIUS, Probe, TargetValue, TileLists};
+pub use {probe_pcf::Filtered, probe_shadow::FACES, probe_shadow::ShadowProbe};
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_lights_fit, max_lights};
@@ -181,8 +184,7 @@ impl Renderer {
     /// renderer's, in the same order): the lights' derived values, the plan
     /// and, where they changed, the targets are made again, and the programs
     /// of techniques the new plan adds are built. Meshes and textures stay
-    /// uploaded. On an error the renderer
-    /// keeps what it had.
+    /// uploaded. On an error the renderer keeps what it had.
     pub fn set_scene_values(&mut self, scene: &Scene) -> Result<()> {
         check_lights_fit(
             scene,
@@ -339,8 +341,7 @@ impl Renderer {
         self.render_inspected(camera, &mut |_| {})
     }
 
-    /// `render`, calling `after_pass` after each pass (tests inspect the GL
-    /// state there; the demo's pass inspector will too).
+    /// `render`, calling `after_pass` after each pass (tests inspect the GL state there).
     pub fn render_inspected(
         &mut self,
         camera: &Camera,
@@ -366,8 +367,9 @@ impl Renderer {
             };
             let technique = self.techniques[pass.technique].as_deref();
             let technique = technique.expect("built for its pass");
-            passes::run_pass(i + 1, pass, technique, &frame, self.debug_groups);
-            timer.mark(pass.name);
+            let groups = self.debug_groups;
+            passes::run_pass(i + 1, pass, &self.plan.title(i), technique, &frame, groups);
+            timer.mark(pass.name, self.plan.title(i));
             after_pass(pass);
         }
         self.last_times = timer.finish();

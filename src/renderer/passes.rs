@@ -15,16 +15,18 @@ pub fn has_debug_groups(gl: &glow::Context) -> bool {
         || (gl.version().major == 4 && gl.version().minor >= 3)
 }
 
-/// Run pass number `number` (1-based) of the plan with `technique`.
+/// Run pass number `number` (1-based) of the plan with `technique`;
+/// `title` is the pass named by what it draws (`FramePlan::title`).
 pub fn run_pass(
     number: usize,
     pass: &Pass,
+    title: &str,
     technique: &dyn RunPasses,
     frame: &Frame,
     groups: bool,
 ) {
     let registered = techniques::ALL[pass.technique];
-    let name = format!("{number}. {} ({})", pass.name, registered.name);
+    let name = format!("{number}. {title} ({})", registered.name);
     if groups {
         unsafe {
             frame
@@ -35,6 +37,7 @@ pub fn run_pass(
     trace::enter_pass(PassLabel {
         number,
         pass: pass.name.to_string(),
+        title: title.to_string(),
         technique: registered.name,
         notes: registered.notes,
         file: registered.file,

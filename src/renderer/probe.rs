@@ -15,11 +15,12 @@
 //! is the top-left pixel, y grows downwards (GL's rows grow upwards).
 
 use super::Renderer;
+use super::probe_read::{read_color, read_depths, read_resolved, read_stencil, read_texture};
 use super::probe_shadow::{ShadowProbe, probe_shadows};
+pub use super::probe_tiles::TileLists;
 use crate::frame::gbuffer::NORMAL;
 use crate::frame::targets::Depth;
 use crate::gl::framebuffer::Framebuffer;
-use crate::gl::texture::bytemuck_f32;
 use crate::scene::{Camera, LightKind};
 use anyhow::{Result, bail};
 use glam::{Vec3, Vec4};
@@ -27,6 +28,10 @@ use glow::HasContext;
 
 /// The magnifier's reach: (2 R + 1)^2 pixels around the probed one.
 pub const MAGNIFIER_RADIUS: i32 = 7;
+
+/// Why a multisampled attachment is not read: one whose format a resolve
+/// into a float or byte texture cannot take (an integer format).
+const NOT_READ_MSAA: &str = "multisampled, in a format the probe's one-pixel resolve does not take; its resolved image is read with the target it resolves into";
 
 /// One colour attachment's value at the pixel.
 #[derive(Clone, Debug, PartialEq)]
@@ -62,8 +67,13 @@ pub struct Probe {
     pub stencil: Vec<(String, u8)>,
     pub shadows: Vec<ShadowProbe>,
     /// On the light-volume and tiled paths: the lights that reach the
-    /// point (within their radius, inside a spot light's cone).
+    /// point (within their radius, inside a spot light's cone; on the tiled
+    /// path only those its cluster lists or every pixel shades).
     pub reached: Option<Vec<usize>>,
+    /// On the tiled path: the pixel's cluster and its lists (probe_tiles.rs).
+    pub tile: Option<TileLists>,
+    /// The frame's targets not read at the pixel, each with why.
+    pub not_read: Vec<(String, &'static str)>,
     /// The output's pixels around it, (2 R + 1) rows of (2 R + 1), top row
     /// first, as stored (sRGB-encoded bytes); outside the frame black.
     pub magnifier: Vec<[u8; 4]>,
@@ -85,17 +95,50 @@ impl Renderer {
         let mut targets = Vec::new();
         let mut stencil = Vec::new();
         let mut normal = None;
+        let mut not_read = Vec::new();
         for desc in &self.plan.targets {
-            // A multisampled target cannot be read pixel by pixel (its
-            // resolved twin is); a mip target's levels are the inspector's;
-            // a ping-pong target's textures take turns at attachment 0.
+            // A multisampled target is read resolved, a ping-pong target's
+            // two textures each through a framebuffer of its own; a mip
+            // target's other levels are the inspector's (level 0 is read).
             let Some(fb) = self.targets.find(desc.name) else {
                 continue;
             };
-            if desc.samples > 1 || desc.ping_pong {
+            let (tx, ty) = scaled(x, y, (w, h), (fb.width as u32, fb.height as u32));
+            if desc.samples > 1 {
+                // glReadPixels reads no multisampled framebuffer: each
+                // attachment's pixel resolved (the mean of its samples) by
+                // a one-pixel glBlitFramebuffer, then read.
+                for (i, &(attachment, format)) in desc.colors.iter().enumerate() {
+                    let name = format!("{}.{attachment}", desc.name);
+                    match read_resolved(gl, fb, i as u32, format, tx, ty) {
+                        Some(value) => targets.push(TargetValue {
+                            name: format!(
+                                "{name} (resolved: the mean of its {} samples)",
+                                desc.samples
+                            ),
+                            format,
+                            value,
+                            channels: channels(format),
+                        }),
+                        None => not_read.push((name, NOT_READ_MSAA)),
+                    }
+                }
                 continue;
             }
-            let (tx, ty) = scaled(x, y, (w, h), (fb.width as u32, fb.height as u32));
+            if desc.ping_pong {
+                // Both textures, each through a framebuffer of its own: step
+                // s of the chain writes texture s % 2 (src/frame/post.rs).
+                for (i, &(attachment, format)) in desc.colors.iter().enumerate() {
+                    let value = read_texture(gl, &fb.colors[i], fb.height, tx, ty);
+                    targets.push(TargetValue {
+                        name: format!("{}.{attachment}", desc.name),
+                        format,
+                        value,
+                        channels: channels(format),
+                    });
+                }
+                continue;
+            }
             for (i, &(attachment, format)) in desc.colors.iter().enumerate() {
                 let value = read_color(gl, fb, i as u32, tx, ty);
                 if (attachment, format) == NORMAL && normal.is_none() {
@@ -131,6 +174,7 @@ impl Renderer {
         {
             normal = rebuild.normal_from_depth(gl, fb, x, y, p);
         }
+        let tile = self.tile_lists(x, y, view_position);
         let shadows = match world_position {
             Some(p) => probe_shadows(self, p, normal.map_or(Vec3::ZERO, |n| n.0)),
             None => Vec::new(),
@@ -146,15 +190,18 @@ impl Renderer {
             normal,
             stencil,
             shadows,
-            reached: self.reached(world_position),
+            reached: self.reached(world_position, tile.as_ref()),
+            tile,
+            not_read,
             magnifier: self.magnifier(x, y),
         })
     }
 
     /// The lights that reach `p` on a path that picks lights per pixel
     /// (light volumes, stencil light volumes, tiled shading): the test each
-    /// of those shaders makes.
-    fn reached(&self, p: Option<Vec3>) -> Option<Vec<usize>> {
+    /// of those shaders makes; on the tiled path, of the lights its
+    /// cluster's lists hold (`tile`).
+    fn reached(&self, p: Option<Vec3>, tile: Option<&TileLists>) -> Option<Vec<usize>> {
         let per_pixel = (self.plan.passes.iter()).any(|pass| {
             let t = crate::techniques::ALL.get(pass.technique).map(|t| t.name);
             matches!(
@@ -169,7 +216,13 @@ impl Renderer {
             return Some(Vec::new());
         };
         let lights = self.scene.lights.iter().zip(&self.lights.lights);
-        let reach = lights.enumerate().filter(|(_, (l, f))| {
+        let shaded = |i: usize| {
+            tile.is_none_or(|t| {
+                t.listed.contains(&i) || t.global.contains(&i) || t.casters.contains(&i)
+            })
+        };
+        let reach = lights.enumerate().filter(|&(i, _)| shaded(i));
+        let reach = reach.filter(|(_, (l, f))| {
             let Some(r) = f.radius else { return true };
             let d = p - l.position;
             let inside = d.length() <= r;
@@ -238,79 +291,6 @@ fn channels(format: u32) -> usize {
         glow::RGB8 | glow::RGB16F | glow::R11F_G11F_B10F => 3,
         _ => 4,
     }
-}
-
-/// Colour attachment `index` of framebuffer `fb` at (`x`, `y`) from the
-/// top left, as RGBA floats.
-fn read_color(gl: &glow::Context, fb: &Framebuffer, index: u32, x: u32, y: u32) -> [f32; 4] {
-    let mut v = [0f32; 4];
-    unsafe {
-        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(fb.id));
-        gl.read_buffer(glow::COLOR_ATTACHMENT0 + index);
-        gl.read_pixels(
-            x as i32,
-            fb.height - 1 - y as i32,
-            1,
-            1,
-            glow::RGBA,
-            glow::FLOAT,
-            glow::PixelPackData::Slice(Some(bytemuck_f32(&mut v))),
-        );
-        gl.read_buffer(glow::COLOR_ATTACHMENT0);
-        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
-    }
-    v
-}
-
-/// The stencil value of `fb` at (`x`, `y`) from the top left.
-fn read_stencil(gl: &glow::Context, fb: &Framebuffer, x: u32, y: u32) -> u8 {
-    let mut v = [0u8; 1];
-    unsafe {
-        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(fb.id));
-        gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
-        gl.read_pixels(
-            x as i32,
-            fb.height - 1 - y as i32,
-            1,
-            1,
-            glow::STENCIL_INDEX,
-            glow::UNSIGNED_BYTE,
-            glow::PixelPackData::Slice(Some(&mut v)),
-        );
-        gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
-        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
-    }
-    v[0]
-}
-
-/// The depths of `fb` in the square of reach `r` around (`x`, `y`) from
-/// the top left, clamped to the frame: (2 r + 1)^2 values, top row first.
-fn read_depths(gl: &glow::Context, fb: &Framebuffer, x: u32, y: u32, r: i32) -> Vec<f32> {
-    let side = (2 * r + 1) as usize;
-    let mut out = Vec::with_capacity(side * side);
-    let (w, h) = (fb.width, fb.height);
-    unsafe {
-        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(fb.id));
-        for dy in -r..=r {
-            for dx in -r..=r {
-                let gx = (x as i32 + dx).clamp(0, w - 1);
-                let gy = (h - 1 - (y as i32 + dy)).clamp(0, h - 1);
-                let mut v = [0f32; 1];
-                gl.read_pixels(
-                    gx,
-                    gy,
-                    1,
-                    1,
-                    glow::DEPTH_COMPONENT,
-                    glow::FLOAT,
-                    glow::PixelPackData::Slice(Some(bytemuck_f32(&mut v))),
-                );
-                out.push(v[0]);
-            }
-        }
-        gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
-    }
-    out
 }
 
 /// Window depth back to the view space and world, for the frame's camera.

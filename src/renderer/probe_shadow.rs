@@ -7,16 +7,19 @@
 //! (the shadow matrix and the divide, or for a point light the cube face
 //! its direction points into and its distance / far), the depth stored in
 //! that texel read back with glReadPixels from the map's framebuffer, and
-//! the comparison. The verdict is the centre texel's; a PCF kernel
-//! averages this comparison over its taps, so near an edge the image may be
-//! part lit.
+//! the comparison: the centre texel's verdict. Then the light's PCF kernel
+//! over the same point, tap by tap with the shader's weights
+//! (probe_pcf.rs): the visibility the lighting shader multiplied the light
+//! by, part lit in a penumbra.
 
 use super::Renderer;
+use super::probe_pcf::{Filtered, cube_face, filter_2d, filter_cube};
 use crate::frame::shadows::{CUBE, ORTHOGRAPHIC};
 use crate::gl::texture::bytemuck_f32;
 use crate::math::shadow as matrices;
 use glam::{Vec2, Vec3};
 use glow::HasContext;
+use std::collections::HashMap;
 
 /// Face names in GL's order (GL_TEXTURE_CUBE_MAP_POSITIVE_X + i).
 pub const FACES: [&str; 6] = ["+X", "-X", "+Y", "-Y", "+Z", "-Z"];
@@ -36,10 +39,13 @@ pub struct ShadowProbe {
     pub stored: f32,
     /// The point's own depth in the map's terms, compared with `stored`.
     pub compared: f32,
-    /// compared <= stored (GL_LEQUAL).
+    /// compared <= stored (GL_LEQUAL), at the centre texel.
     pub lit: bool,
     /// The PCF kernel the frame averages with.
     pub pcf: String,
+    /// That kernel's average of its comparisons (1 lit, 0 in shadow), as
+    /// the shader filters: what the light is multiplied by here.
+    pub filtered: Filtered,
 }
 
 /// The lookup of every light with a map this frame, at world point `p`
@@ -75,7 +81,19 @@ pub(super) fn probe_shadows(r: &Renderer, p: Vec3, n: Vec3) -> Vec<ShadowProbe> 
             stored: 1.0,
             compared: 0.0,
             lit: true,
-            pcf: format!("{:?}", s.pcf),
+            pcf: s.pcf.name().to_string(),
+            filtered: Filtered {
+                visibility: 1.0,
+                taps: 0,
+                near_face_edge: false,
+            },
+        };
+        // Each texel read once, however many taps share it.
+        let mut read: HashMap<(usize, i64, i64), f32> = HashMap::new();
+        let mut stored = |face: usize, x: i64, y: i64| {
+            *read
+                .entry((face, x, y))
+                .or_insert_with(|| read_texel(r, map.framebuffers[face], (x as u32, y as u32)))
         };
         if view.kind == CUBE {
             let d = q - light.position;
@@ -85,7 +103,8 @@ pub(super) fn probe_shadows(r: &Renderer, p: Vec3, n: Vec3) -> Vec<ShadowProbe> 
             probe.uv = Some(uv);
             probe.texel = Some(texel);
             probe.compared = (d.length() / view.far).min(1.0);
-            probe.stored = read_texel(r, map.framebuffers[face], texel);
+            probe.stored = stored(face, texel.0 as i64, texel.1 as i64);
+            probe.filtered = filter_cube(s.pcf, d, probe.compared, res, view.texel, &mut stored);
         } else {
             let c = matrices::bias() * view.view_projections[0] * q.extend(1.0);
             if c.w <= 0.0 {
@@ -100,41 +119,15 @@ pub(super) fn probe_shadows(r: &Renderer, p: Vec3, n: Vec3) -> Vec<ShadowProbe> 
                 let texel = texel_of(uv, res);
                 probe.uv = Some(uv);
                 probe.texel = Some(texel);
-                probe.stored = read_texel(r, map.framebuffers[0], texel);
+                probe.stored = stored(0, texel.0 as i64, texel.1 as i64);
             }
+            let c = Vec3::new(uv.x, uv.y, probe.compared);
+            probe.filtered = filter_2d(s.pcf, c, res, &mut |x, y| stored(0, x, y));
         }
         probe.lit = probe.compared <= probe.stored;
         out.push(probe);
     }
     out
-}
-
-/// The cube face direction `d` points into and where on it (s, t in
-/// 0..1), as GL picks them (GL 3.3 §3.8.10, table 3.21).
-pub fn cube_face(d: Vec3) -> (usize, Vec2) {
-    let a = d.abs();
-    let (face, sc, tc, ma) = if a.x >= a.y && a.x >= a.z {
-        if d.x >= 0.0 {
-            (0, -d.z, -d.y, a.x)
-        } else {
-            (1, d.z, -d.y, a.x)
-        }
-    } else if a.y >= a.z {
-        if d.y >= 0.0 {
-            (2, d.x, d.z, a.y)
-        } else {
-            (3, d.x, -d.z, a.y)
-        }
-    } else if d.z >= 0.0 {
-        (4, d.x, -d.y, a.z)
-    } else {
-        (5, -d.x, -d.y, a.z)
-    };
-    let ma = ma.max(1e-20);
-    (
-        face,
-        Vec2::new(0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0)),
-    )
 }
 
 /// The texel (column, row from the bottom) that `uv` falls in.
@@ -176,10 +169,22 @@ impl std::fmt::Display for ShadowProbe {
             }
             _ => "outside the map".to_string(),
         };
+        let edge = if self.filtered.near_face_edge {
+            " (within half a texel of a face edge: a GPU filtering across faces may differ)"
+        } else {
+            ""
+        };
         write!(
             f,
-            "shadow of light {} ({map}, {}x{}): {at}, stored {:.6}, compared {:.6}: {verdict} (centre texel; PCF {})",
-            self.light, self.resolution, self.resolution, self.stored, self.compared, self.pcf
+            "shadow of light {} ({map}, {}x{}): {at}, stored {:.6}, compared {:.6}: {verdict} at the centre texel; PCF {} over {} comparisons: visibility {:.4}{edge}",
+            self.light,
+            self.resolution,
+            self.resolution,
+            self.stored,
+            self.compared,
+            self.pcf,
+            self.filtered.taps,
+            self.filtered.visibility
         )
     }
 }

@@ -43,12 +43,18 @@ impl std::fmt::Display for Probe {
         for s in &self.shadows {
             writeln!(f, "  {s}")?;
         }
+        if let Some(t) = &self.tile {
+            writeln!(f, "  {t}")?;
+        }
         if let Some(r) = &self.reached {
             let list: Vec<String> = r.iter().map(|l| l.to_string()).collect();
             match list.is_empty() {
                 true => writeln!(f, "  lights reaching it: none")?,
                 false => writeln!(f, "  lights reaching it: {}", list.join(", "))?,
             }
+        }
+        for (target, why) in &self.not_read {
+            writeln!(f, "  not read: {target} ({why})")?;
         }
         Ok(())
     }

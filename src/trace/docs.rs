@@ -110,7 +110,7 @@ pub fn kept<'a>(
         let mut ran: Vec<String> = calls
             .iter()
             .filter_map(|c| c.pass.as_ref())
-            .map(|l| format!("{} ({})", l.pass, l.technique))
+            .map(|l| format!("{} ({})", l.title, l.technique))
             .collect();
         ran.dedup();
         bail!(

@@ -22,7 +22,10 @@ impl Filter {
             return self.technique.is_none() && self.pass.is_none();
         };
         self.technique.as_ref().is_none_or(|t| *t == l.technique)
-            && self.pass.as_ref().is_none_or(|p| *p == l.pass)
+            && self
+                .pass
+                .as_ref()
+                .is_none_or(|p| *p == l.pass || *p == l.title)
     }
 }
 
@@ -66,7 +69,7 @@ pub fn by_pass<'a>(
 /// A pass's heading: `3. lighting: light_volumes (notes 04, Light Volumes)`.
 pub fn heading(label: Option<&PassLabel>) -> String {
     match label {
-        Some(l) => format!("{}. {}: {} ({})", l.number, l.pass, l.technique, l.notes),
+        Some(l) => format!("{}. {}: {} ({})", l.number, l.title, l.technique, l.notes),
         None => "between passes (the renderer)".to_string(),
     }
 }

@@ -46,8 +46,13 @@ fn a_mirror_frames_passes_are_named_by_the_reflection_they_draw() {
 }
 
 #[test]
-fn a_shadow_pass_is_named_by_its_light() {
-    let scene = common::scene("shadows-point.toml");
+fn a_shadow_pass_is_named_by_its_light_and_a_cube_face_by_its_face() {
+    let scene = common::scene("shadows-directional.toml");
     let plan = gloss::techniques::plan(&scene);
     assert_eq!(plan.title(0), "shadow map (light 0)");
+    // A point light's cube, one pass per face (tests/shadows/face_passes.rs).
+    let scene = common::scene("shadows-point.toml");
+    let plan = gloss::techniques::plan(&scene);
+    assert_eq!(plan.title(0), "shadow map (light 0, face +X)");
+    assert_eq!(plan.title(5), "shadow map (light 0, face -Z)");
 }

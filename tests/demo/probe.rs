@@ -8,6 +8,9 @@
 //! meets nothing is lit.
 
 use glam::{Mat4, Vec3, Vec4};
+use gloss::gl::program::Sources;
+use gloss::renderer::{Output, Renderer};
+use gloss::scene::{Pcf, RenderPath, Scene};
 use std::process::Command;
 
 const GLOSS: &str = env!("CARGO_BIN_EXE_gloss");
@@ -132,9 +135,9 @@ fn verdict(text: &str) -> &'static str {
     let line = (text.lines())
         .find(|l| l.trim_start().starts_with("shadow of light 0"))
         .unwrap_or_else(|| panic!("no shadow lookup in\n{text}"));
-    if line.contains(": in shadow (") {
+    if line.contains(": in shadow at the centre texel") {
         "in shadow"
-    } else if line.contains(": lit (") {
+    } else if line.contains(": lit at the centre texel") {
         "lit"
     } else {
         panic!("no verdict in {line}")
@@ -200,4 +203,180 @@ fn a_pixel_outside_the_frame_is_refused_with_the_frame_size() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("(960, 0)") && err.contains("960x540"), "{err}");
+}
+
+/// A scene of `name` lit by its casting light alone (no ambient, no other
+/// light) at 320x180, its filter `pcf` on a 256-texel map, on `path`.
+fn lit_by_the_caster(name: &str, pcf: Pcf, path: RenderPath) -> Scene {
+    let mut s = crate::common::scene(name);
+    s.lights.retain(|l| l.shadow.is_some());
+    assert_eq!(s.lights.len(), 1, "{name}: one casting light");
+    // A coarse map: its penumbrae span several pixels of the small frame.
+    let shadow = s.lights[0].shadow.as_mut().unwrap();
+    shadow.pcf = pcf;
+    shadow.resolution = 256;
+    s.render.ambient = Vec3::ZERO;
+    s.render.size = (320, 180);
+    s.render.path = path;
+    s
+}
+
+/// The frame of `scene` as linear floats (bottom row first), and its renderer.
+fn linear(ctx: &gloss::gl::Headless, scene: &Scene) -> (Vec<f32>, Renderer) {
+    let (w, h) = scene.render.size;
+    let mut r = Renderer::with_output(
+        &ctx.gl,
+        &ctx.debug,
+        scene,
+        &Sources::Embedded,
+        w as i32,
+        h as i32,
+        Output::Linear32F,
+    )
+    .unwrap();
+    r.render(&scene.camera).unwrap();
+    (r.read_linear(), r)
+}
+
+/// At penumbra pixels, the probe's filtered visibility (its PCF redone on
+/// the CPU) is the shadow factor the frame applied: the light's value at
+/// the pixel with the shadow over the light's value without it (only that
+/// light, no ambient, so the ratio is the factor the shader multiplied by).
+///
+/// On the deferred path, where the probe reads the normal the shader read
+/// (the G-buffer's) and rebuilds the point from the same depth. (On the
+/// forward path the probe rebuilds the normal from the depths beside the
+/// pixel while the shader interpolates the vertices' normal: the normal
+/// offset then moves the lookup, and a 3x3 box was seen two taps off at a
+/// penumbra pixel of shadows-spot.)
+///
+/// Bound, per pixel: for the box and disc kernels one tap's share
+/// (1/taps) plus 0.02 (the shader's and the CPU's float arithmetic may put
+/// one tap on either side of a texel's edge); for the bilinear `hardware`
+/// lookup 0.03 (llvmpipe blends its four comparisons with 8-bit weights,
+/// 1/256 steps). Mean over the
+/// pixels: 0.02. The centre texel's verdict alone (0 or 1) would miss every
+/// pixel chosen here by 0.15 at least (they are picked with factors in
+/// 0.15..0.85), more than any bound here (the 3x3 box's is 0.131).
+#[test]
+fn the_filtered_visibility_at_penumbra_pixels_is_the_frames_shadow_factor() {
+    let ctx = crate::common::context(crate::common::backend());
+    let cases = [
+        ("shadows-spot.toml", Pcf::Hardware, RenderPath::Deferred),
+        ("shadows-spot.toml", Pcf::Box3, RenderPath::Deferred),
+        ("shadows-spot.toml", Pcf::Box5, RenderPath::Deferred),
+        ("shadows-spot.toml", Pcf::Poisson, RenderPath::Deferred),
+        ("shadows-point.toml", Pcf::Box3, RenderPath::Deferred),
+        ("shadows-point.toml", Pcf::Poisson, RenderPath::Deferred),
+    ];
+    for (name, pcf, path) in cases {
+        let scene = lit_by_the_caster(name, pcf, path);
+        let mut open = scene.clone();
+        open.lights[0].shadow = None;
+        let (with, r) = linear(&ctx, &scene);
+        let (without, _) = linear(&ctx, &open);
+        let (w, h) = scene.render.size;
+        // Pixels (from the top left) with a penumbra's factor.
+        let mut penumbra = Vec::new();
+        for y in 0..h {
+            for x in 0..w {
+                let i = (((h - 1 - y) * w + x) * 4) as usize;
+                let c = (0..3).max_by(|&a, &b| without[i + a].total_cmp(&without[i + b]));
+                let c = i + c.unwrap();
+                if without[c] > 0.02 {
+                    let factor = with[c] / without[c];
+                    if (0.15..=0.85).contains(&factor) {
+                        penumbra.push((x, y, factor));
+                    }
+                }
+            }
+        }
+        assert!(
+            penumbra.len() >= 10,
+            "{name} {pcf:?}: {} penumbra pixels",
+            penumbra.len()
+        );
+        let step = (penumbra.len() / 20).max(1);
+        let (mut worst, mut sum, mut n) = (0f32, 0f32, 0);
+        for &(x, y, factor) in penumbra.iter().step_by(step) {
+            let p = r.probe(&scene.camera, x, y).unwrap();
+            let s = (p.shadows.iter().find(|s| s.light == 0)).expect("the light's lookup");
+            let bound = match pcf {
+                Pcf::Hardware => 0.03,
+                _ => 1.0 / s.filtered.taps.max(1) as f32 + 0.02,
+            };
+            let error = (s.filtered.visibility - factor).abs();
+            assert!(
+                error <= bound,
+                "{name} {pcf:?} {path:?} pixel ({x}, {y}): the frame's factor {factor:.4}, the probe's {:.4} (bound {bound:.3})\n{p}",
+                s.filtered.visibility
+            );
+            worst = worst.max(error);
+            sum += error;
+            n += 1;
+        }
+        let mean = sum / n as f32;
+        eprintln!("{name} {pcf:?} {path:?}: {n} penumbra pixels, worst {worst:.4}, mean {mean:.4}");
+        assert!(mean <= 0.02, "{name} {pcf:?}: mean error {mean}");
+    }
+}
+
+/// On the tiled path the probe names the pixel's cluster as the shader
+/// finds it (its tile from the pixel, its slice from the view depth) and
+/// reads that cluster's list from what the tiled pass uploaded this frame;
+/// the list is conservative: every light whose radius holds the point is on
+/// it, or shaded at every pixel.
+#[test]
+fn on_the_tiled_path_the_probe_reads_the_pixels_cluster_list() {
+    let ctx = crate::common::context(crate::common::backend());
+    let mut scene = crate::common::scene("many-lights.toml");
+    scene.render.size = (320, 180);
+    scene.render.path = RenderPath::Tiled;
+    let mut r = Renderer::new(&ctx.gl, &ctx.debug, &scene, &Sources::Embedded, 320, 180).unwrap();
+    r.render(&scene.camera).unwrap();
+    let (grid, bins) = r.tiled_lists().expect("the tiled pass kept its lists");
+    let mut probed = 0;
+    for (x, y) in [(160, 120), (40, 150), (300, 170), (200, 100)] {
+        let p = r.probe(&scene.camera, x, y).unwrap();
+        let (Some(v), Some(world)) = (p.view_position, p.world_position) else {
+            continue;
+        };
+        let t = p.tile.as_ref().expect("a tile on the tiled path");
+        // The shader's cluster: gl_FragCoord's tile, the slice of -z.
+        let tile = (x / grid.tile_size, (179 - y) / grid.tile_size);
+        assert_eq!(t.tile, tile);
+        assert_eq!(t.slice, grid.slice_of(-v.z));
+        let [offset, count] = bins.clusters[grid.index(tile.0, tile.1, t.slice)];
+        let uploaded: Vec<usize> = bins.indices[offset as usize..(offset + count) as usize]
+            .iter()
+            .map(|&i| i as usize)
+            .collect();
+        assert_eq!(t.listed, uploaded, "pixel ({x}, {y})");
+        let global = bins.indices[..bins.global as usize].iter();
+        assert_eq!(t.global, global.map(|&i| i as usize).collect::<Vec<_>>());
+        // Conservative: a light whose radius holds the point is listed.
+        let mut within = 0;
+        for (i, l) in scene.lights.iter().enumerate() {
+            let (cutoff, falloff) = (scene.render.cutoff, scene.render.falloff);
+            let radius = gloss::frame::lights::model_radius(l, cutoff, falloff);
+            if radius.is_some_and(|rad| (world - l.position).length() < rad * 0.999) {
+                within += 1;
+                assert!(
+                    t.listed.contains(&i),
+                    "light {i} reaches ({x}, {y}), not listed: {t}"
+                );
+            }
+        }
+        // The lights the probe says reach the point are among the lists.
+        for i in p.reached.as_ref().unwrap() {
+            assert!(t.listed.contains(i) || t.global.contains(i) || t.casters.contains(i));
+        }
+        assert!(p.to_string().contains("the tiled pass listed"), "{p}");
+        eprintln!(
+            "({x}, {y}): {within} lights within their radius, {} listed",
+            t.listed.len()
+        );
+        probed += 1;
+    }
+    assert!(probed >= 2, "most probed pixels show the floor");
 }

@@ -23,11 +23,15 @@ fn lights(actions: Vec<Action>) -> Vec<Light> {
     l
 }
 
+/// The lights with a shadow pass, each once (a point light's cube drawn
+/// face by face has six passes in a row).
 fn shadow_passes(r: &Renderer) -> Vec<usize> {
-    (r.plan.passes.iter())
+    let mut lights: Vec<usize> = (r.plan.passes.iter())
         .filter(|p| p.name == "shadow map")
         .map(|p| p.item)
-        .collect()
+        .collect();
+    lights.dedup();
+    lights
 }
 
 #[test]

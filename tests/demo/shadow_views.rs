@@ -45,7 +45,10 @@ fn inspect(ctx: &gloss::gl::Headless, name: &str) -> Inspected {
         scene.lights[i].kind
     });
     let all = views(&r.plan, false, &shadows);
-    let listed: Vec<ShadowView> = all.iter().filter_map(|v| v.shadow).collect();
+    // The maps (a cube's cross), each followed by its faces alone.
+    let listed: Vec<ShadowView> = (all.iter().filter_map(|v| v.shadow))
+        .filter(|s| s.face.is_none())
+        .collect();
     let casting: Vec<usize> = (0..scene.lights.len())
         .filter(|&i| scene.lights[i].shadow.is_some())
         .collect();
@@ -227,6 +230,7 @@ fn the_inspected_shadow_map_follows_its_light_when_the_list_shifts() {
         light,
         kind: LightKind::Spot,
         resolution,
+        face: None,
     };
     let before = views(&plan, false, &[caster(0, 512), caster(2, 512)]);
     let mut kept = None;
@@ -254,4 +258,58 @@ fn the_inspected_shadow_map_follows_its_light_when_the_list_shifts() {
     let first = none[0].clone();
     assert_eq!(follow(Some(0), &mut kept, &none), Some(0));
     assert!(kept.as_ref().is_some_and(|v| v.same_as(&first)));
+}
+
+/// Each face of a cube is a view of its own, the output of its face's pass
+/// ("shadow map (light 0, face +X)"), after the cross: the face alone in a
+/// square, as GL stores it (s to the right, t = 0 at the top), stretched
+/// between its own extremes.
+#[test]
+fn each_cube_face_is_a_view_of_its_own_after_the_cross() {
+    let ctx = common::context(common::backend());
+    let i = inspect(&ctx, "shadows-point.toml");
+    let all = views(&i.renderer.plan, false, &i.views);
+    let faces: Vec<ShadowView> = (all.iter().filter_map(|v| v.shadow)).collect();
+    assert_eq!(faces.len(), 7, "the cross and six faces");
+    assert_eq!(faces[0].face, None);
+    let labels: Vec<String> = all[..7].iter().map(|v| v.label()).collect();
+    for (f, name) in ["+X", "-X", "+Y", "-Y", "+Z", "-Z"].iter().enumerate() {
+        assert_eq!(faces[f + 1].face, Some(f));
+        assert!(
+            labels[f + 1].contains(&format!("face {name} alone")),
+            "{labels:?}"
+        );
+        assert!(!all[0].same_as(&all[f + 1]));
+    }
+    let gl = &ctx.gl;
+    let map = &i.renderer.shadows().maps[0].1;
+    let n = TEXELS as usize;
+    let side = 2 * TEXELS as i32;
+    let into = Framebuffer::new(gl, "face", side, side, &[glow::RGBA8], None).unwrap();
+    let mut shadow_views = ShadowViews::new(gl, &Sources::Embedded).unwrap();
+    for face in 0..6 {
+        let texels = map.read(face as u32);
+        let view = faces[face + 1];
+        let stretch = shadow_views
+            .draw(&view, i.renderer.shadows(), &into)
+            .unwrap();
+        ctx.debug.check(gl, "drawing a cube face's view").unwrap();
+        assert_eq!(
+            stretch,
+            Some(range(texels.iter())),
+            "face {face}: its own stretch"
+        );
+        let image = into.read_rgba8_top_down(0);
+        for y in 0..side as u32 {
+            for x in 0..side as u32 {
+                let p = image.get_pixel(x, y).0;
+                let (s, t) = ((x / 2) as usize, (y / 2) as usize);
+                let want = shown(texels[t * n + s], stretch.unwrap());
+                assert!(
+                    close([p[0], p[1], p[2]], want),
+                    "face {face}: ({x}, {y}) shows {p:?}, texel ({s}, {t}) gives {want:?}"
+                );
+            }
+        }
+    }
 }

@@ -15,6 +15,7 @@ mod common;
 
 mod cascaded_shadow_maps;
 mod culling;
+mod face_passes;
 mod hard_cases;
 mod paths;
 mod pcf;

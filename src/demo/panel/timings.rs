@@ -54,11 +54,14 @@ impl Timings {
                 });
                 egui::Grid::new("pass-times").striped(true).show(ui, |ui| {
                     for (i, (name, ms)) in times.passes.iter().enumerate() {
-                        if times.passes.len() == plan.passes.len() {
-                            ui.label(plan.title(i));
-                        } else {
-                            ui.label(*name);
-                        }
+                        // Named as the plan of the frame they timed named them.
+                        match times.titles.get(i) {
+                            Some(title) => ui.label(title),
+                            None if times.passes.len() == plan.passes.len() => {
+                                ui.label(plan.title(i))
+                            }
+                            None => ui.label(*name),
+                        };
                         ui.monospace(format!("{ms:8.2} ms"));
                         if gpu {
                             ui.monospace(format!("GPU {:8.2} ms", times.gpu[i]));

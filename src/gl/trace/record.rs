@@ -14,6 +14,9 @@ pub struct PassLabel {
     /// Its place in the frame, 1-based, as `gloss plan` numbers passes.
     pub number: usize,
     pub pass: String,
+    /// The pass named by what it draws, as `gloss plan` shows it
+    /// ("shadow map (light 1, face +X)").
+    pub title: String,
     pub technique: &'static str,
     pub notes: &'static str,
     /// The technique's file.

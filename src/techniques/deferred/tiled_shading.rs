@@ -224,6 +224,10 @@ impl RunPasses for TiledShading {
             .flat_map(|v| v.to_ne_bytes())
             .collect();
         self.clusters.write(&lists);
+        if f.view.name == "camera" {
+            // Kept for the pixel probe (src/renderer/probe.rs).
+            *f.draws.tiled_lists.borrow_mut() = Some((grid, bins.clone()));
+        }
 
         // 3. One full-screen pass over the G-buffer.
         let far = far_field::runs(f.scene, f.lights);

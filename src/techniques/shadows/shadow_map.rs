@@ -11,8 +11,9 @@
 //! One pass per casting light, before any view of the frame. A directional
 //! light looks through an orthographic box, a spot light through a
 //! perspective frustum (notes 02), a point light through the six faces of a
-//! cube: six passes, or one pass whose geometry shader picks the face with
-//! gl_Layer (`cube = "geometry_shader"`). The second pass is in every
+//! cube: six passes, one per face ("shadow map (light 1, face +X)", each
+//! its own pass in the plan, the timings and the trace), or one pass whose
+//! geometry shader picks the face with gl_Layer (`cube = "geometry_shader"`). The second pass is in every
 //! lighting shader: glsl/common/shadow.glsl, with the maps bound by
 //! src/frame/shadows.rs.
 //!
@@ -28,6 +29,7 @@
 //! texture or sampler on unit DIFFUSE_TEXTURE (unit 0 active).
 
 use crate::frame::lights::FrameLights;
+use crate::frame::pass::{ALL_FACES, CUBE_FACES};
 use crate::frame::plan::Pass;
 use crate::frame::shadows::{Caster, casters};
 use crate::frame::targets::TargetDesc;
@@ -62,18 +64,32 @@ pub const SHADOW_MAP: Technique = Technique {
     runs: Runs::BeforeViews,
 };
 
-/// One pass per casting light; none when no light casts. A light whose
-/// map is split into cascades has cascaded_shadow_maps.rs's passes instead.
+/// One pass per casting light's map, and for a point light's cube drawn
+/// face by face one pass per face, in GL's order (+X, -X, +Y, -Y, +Z, -Z),
+/// so that each is timed and inspected alone; none when no light casts. A
+/// light whose map is split into cascades has cascaded_shadow_maps.rs's
+/// passes instead.
 fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     let casting = scene.objects.len() - transparent(scene);
-    casters(scene)
-        .iter()
-        .filter(|c| !c.cascaded())
-        .map(|c| {
-            let draws = describe(scene, c, casting);
-            Pass::new("shadow map", "shadow map", draws, file!()).about(c.light, c.slot as u32)
-        })
-        .collect()
+    let mut passes = Vec::new();
+    for c in casters(scene).iter().filter(|c| !c.cascaded()) {
+        let draws = describe(scene, c, casting);
+        let pass = Pass::new("shadow map", "shadow map", draws, file!());
+        let pass = pass.about(c.light, c.slot as u32);
+        match (c.cube, c.shadow.cube) {
+            (false, _) => passes.push(pass),
+            (true, CubeRender::SixPasses) => passes.extend((0..CUBE_FACES.len()).map(|face| {
+                let draws = format!("face {}, {}", CUBE_FACES[face], pass.draws);
+                Pass {
+                    draws,
+                    ..pass.clone()
+                }
+                .face(face)
+            })),
+            (true, CubeRender::GeometryShader) => passes.push(pass.face(ALL_FACES)),
+        }
+    }
+    passes
 }
 
 pub(super) fn transparent(scene: &Scene) -> usize {
@@ -89,7 +105,7 @@ fn describe(scene: &Scene, c: &Caster, objects: usize) -> String {
     let kind = format!("{:?}", l.kind).to_lowercase();
     if c.cube {
         let how = match c.shadow.cube {
-            CubeRender::SixPasses => "six passes",
+            CubeRender::SixPasses => "one pass per face",
             CubeRender::GeometryShader => "one pass, geometry shader",
         };
         format!(
@@ -189,24 +205,28 @@ impl RunPasses for ShadowMap {
             program.set_vec3("u_light_position", light.position);
             program.set_f32("u_far", view.far);
             program.set_f32("u_slope_bias", s.slope_bias);
-            if !caster.cube || s.cube == CubeRender::SixPasses {
-                // One framebuffer per face (a 2D map has one face).
-                for (face, vp) in view.view_projections.iter().enumerate() {
+            match pass.face {
+                // A 2D map (one face), or one face of the cube: one
+                // framebuffer, the face's view-projection.
+                None | Some(0..6) => {
+                    let face = pass.face.unwrap_or(0);
+                    let vp = &view.view_projections[face];
                     gl.bind_framebuffer(glow::FRAMEBUFFER, Some(map.framebuffers[face]));
                     gl.clear(glow::DEPTH_BUFFER_BIT);
                     program.set_mat4("u_light_view_projection", vp);
                     draw_casters(gl, program, f, std::slice::from_ref(vp), s.cull_front);
                 }
-            } else {
                 // The whole cube attached as a layered image: one clear
                 // clears all six faces, one draw reaches them all.
-                gl.bind_framebuffer(glow::FRAMEBUFFER, Some(map.framebuffers[6]));
-                gl.clear(glow::DEPTH_BUFFER_BIT);
-                program.set_mat4("u_light_view_projection", &glam::Mat4::IDENTITY);
-                for (face, vp) in view.view_projections.iter().enumerate() {
-                    program.set_mat4(&format!("u_face_view_projection[{face}]"), vp);
+                Some(_) => {
+                    gl.bind_framebuffer(glow::FRAMEBUFFER, Some(map.framebuffers[6]));
+                    gl.clear(glow::DEPTH_BUFFER_BIT);
+                    program.set_mat4("u_light_view_projection", &glam::Mat4::IDENTITY);
+                    for (face, vp) in view.view_projections.iter().enumerate() {
+                        program.set_mat4(&format!("u_face_view_projection[{face}]"), vp);
+                    }
+                    draw_casters(gl, program, f, &view.view_projections, s.cull_front);
                 }
-                draw_casters(gl, program, f, &view.view_projections, s.cull_front);
             }
 
             // Restore the state this pass changed.

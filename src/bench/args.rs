@@ -48,6 +48,11 @@ pub struct BenchArgs {
     /// (repeatable; every combination is measured). See src/bench/variants.rs.
     #[arg(long, value_name = "KEY=V1,V2")]
     pub vary: Vec<String>,
+    /// With --vary: one more setting besides the combinations, its keys
+    /// joined by ';' (`--case 'render.path=tiled;render.far_field=4'`;
+    /// repeatable, measured in the order given, after the combinations).
+    #[arg(long = "case", value_name = "KEY=V;KEY=V", requires = "vary")]
+    pub cases: Vec<String>,
     /// With --vary: the reference image's settings, KEY=VALUE (repeatable;
     /// default: the scene as written).
     #[arg(long = "reference", value_name = "KEY=VALUE", requires = "vary")]

@@ -50,7 +50,14 @@ pub(super) fn run(
     ctx: &Headless,
     software: bool,
 ) -> Result<()> {
-    let combos = combinations(&args.vary)?;
+    let mut combos = combinations(&args.vary)?;
+    for c in &args.cases {
+        let keys: Vec<String> = c.split(';').map(|k| k.trim().to_string()).collect();
+        if keys.iter().any(|k| !k.contains('=')) {
+            bail!("--case {c}: expected KEY=VALUE;KEY=VALUE...");
+        }
+        combos.push(keys);
+    }
     let sized = |mut s: Scene| {
         if let Some(size) = args.size {
             s.render.size = size;

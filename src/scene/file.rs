@@ -120,6 +120,8 @@ pub(super) struct RenderFile {
     pub(super) tile_size: u32,
     pub(super) depth_slices: u32,
     pub(super) far_field: u32,
+    pub(super) far_field_sh: bool,
+    pub(super) near_radius: f32,
     pub(super) mirror_order: MirrorOrder,
     /// How many mirrors deep reflections go (1: mirrors seen in a mirror are blank).
     pub(super) mirror_depth: u32,
@@ -188,6 +190,8 @@ impl Default for RenderFile {
             tile_size: 16,
             depth_slices: 16,
             far_field: 0,
+            far_field_sh: false,
+            near_radius: 1.0,
             mirror_order: MirrorOrder::NormalFirst,
             mirror_depth: 1,
             mirror_clip: true,

@@ -45,14 +45,11 @@ pub struct BenchArgs {
     #[arg(long, default_value_t = 3)]
     pub warmup: usize,
     /// Vary any scene key instead of the render path: KEY=V1,V2,...
-    /// (repeatable; every combination is measured). See src/bench/variants.rs.
+    /// (repeatable; every combination is measured). A value with ';' is one
+    /// setting of its own, KEY=V;KEY=V, measured after the combinations
+    /// (`--vary 'render.path=tiled;render.far_field=4'`). See src/bench/variants.rs.
     #[arg(long, value_name = "KEY=V1,V2")]
     pub vary: Vec<String>,
-    /// With --vary: one more setting besides the combinations, its keys
-    /// joined by ';' (`--case 'render.path=tiled;render.far_field=4'`;
-    /// repeatable, measured in the order given, after the combinations).
-    #[arg(long = "case", value_name = "KEY=V;KEY=V", requires = "vary")]
-    pub cases: Vec<String>,
     /// With --vary: the reference image's settings, KEY=VALUE (repeatable;
     /// default: the scene as written).
     #[arg(long = "reference", value_name = "KEY=VALUE", requires = "vary")]

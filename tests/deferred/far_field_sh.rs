@@ -119,7 +119,8 @@ fn on_sphere(eye: Vec3, fov_y: f32, size: u32, x: u32, y: u32) -> Vec3 {
 /// found by casting its ray at the sphere. The CPU's harmonics there,
 /// evaluated at the pixel's normal and weighted, are what the light target
 /// holds at the pixel, within 1%. The harmonics without band 0's move (the
-/// plain projection) differ by more than 5%, so the test can tell. The
+/// plain projection) differ by more than 2.5% (3.8% measured), so the test
+/// can tell. The
 /// light is dim so that every sample serves (SH_TOLERANCE).
 #[test]
 fn the_shader_harmonics_equal_the_cpus() {
@@ -205,7 +206,7 @@ fn the_shader_harmonics_equal_the_cpus() {
         );
     }
     assert!(
-        (plain.x - want.x).abs() > 0.05 * want.x,
+        (plain.x - want.x).abs() > 0.025 * want.x,
         "the harmonics without the move {plain} should differ from {want} here"
     );
     eprintln!("shader {got}, CPU {want}, exact {exact}, without the move {plain}");

@@ -136,21 +136,21 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     let n = (lights.lights.iter())
         .filter(|l| l.radius.is_some())
         .count();
-    let draws = format!(
-        "1 full-screen triangle at {sw}x{sh} (one sample per {k}x{k} pixels): the far part of {n} lights"
+    let mut draws = format!(
+        "1 full-screen triangle at {sw}x{sh} (one sample per {k}x{k} pixels): the far part of {n} lights, "
     );
-    let mut variant = LightingVariant::of(scene, lights).describe();
-    variant.push_str(if scene.render.far_field_sh {
-        "; diffuse as order-2 spherical harmonics"
+    draws.push_str(if scene.render.far_field_sh {
+        "diffuse as order-2 spherical harmonics"
     } else {
-        "; diffuse at the sample's normal"
+        "diffuse at the sample's normal"
     });
     if scene.render.near_radius < 1.0 {
-        variant.push_str(&format!(
+        draws.push_str(&format!(
             "; near part to {} x the cutoff radius",
             scene.render.near_radius
         ));
     }
+    let variant = LightingVariant::of(scene, lights).describe();
     vec![Pass::new("far field", TARGET, draws, file!()).with_variant(variant)]
 }
 

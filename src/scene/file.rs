@@ -77,13 +77,13 @@ pub(super) struct CameraFile {
     pub(super) target: [f32; 3],
     #[serde(default = "up_y")]
     pub(super) up: [f32; 3],
-    #[serde(default = "default_fov")]
+    #[serde(default = "super::checks::default_fov")]
     pub(super) fov_y: f32,
     /// Orthographic: half the height of the view box (width follows the aspect).
     pub(super) half_height: Option<f32>,
-    #[serde(default = "default_near")]
+    #[serde(default = "super::checks::default_near")]
     pub(super) near: f32,
-    #[serde(default = "default_far")]
+    #[serde(default = "super::checks::default_far")]
     pub(super) far: f32,
 }
 
@@ -92,15 +92,6 @@ fn perspective_str() -> String {
 }
 fn up_y() -> [f32; 3] {
     [0.0, 1.0, 0.0]
-}
-fn default_fov() -> f32 {
-    50.0
-}
-fn default_near() -> f32 {
-    0.1
-}
-fn default_far() -> f32 {
-    100.0
 }
 
 #[derive(Deserialize, Debug)]

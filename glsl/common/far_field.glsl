@@ -16,11 +16,25 @@ uniform int u_far_scale;           // k: one sample per k x k pixels
 uniform int u_light_count;
 uniform float u_far_reach;         // the farthest a sample's surface point may be from the pixel's
 uniform vec3 u_eye;
+// render.near_radius: the near part ends at this fraction of the radius
+// (and is whole up to half of that); tiled shading bins at it.
+uniform float u_near_scale;
+#ifdef FAR_FIELD_SH
+// common/far_field_sh.glsl: the harmonics' floats 4 to 27 (0 to 3 are in
+// u_far_diffuse; u_far_specular keeps the specular light).
+uniform sampler2D u_far_sh1;
+uniform sampler2D u_far_sh2;
+uniform sampler2D u_far_sh3;
+uniform sampler2D u_far_sh4;
+uniform sampler2D u_far_sh5;
+uniform sampler2D u_far_sh6;
+#endif
 
 float near_weight(float d, float radius) {
     // A light never brighter than the cutoff has radius 0: all far.
     if (radius <= 0.0) return 0.0;
-    return 1.0 - smoothstep(NEAR_INNER * radius, radius, d);
+    float outer = u_near_scale * radius;
+    return 1.0 - smoothstep(NEAR_INNER * outer, outer, d);
 }
 
 // The far part of every light with a radius and no shadow map, at surface s
@@ -171,7 +185,7 @@ void far_bound_terms(Surface s, vec3 V, vec3 diffuse, vec3 specular, float rho,
             continue;
         }
         float d_s = distance(p, s.P);
-        float a = NEAR_INNER * radius;
+        float a = NEAR_INNER * u_near_scale * radius;
         if (d_s + rho <= a) continue;      // inside the near part all over the ball
         float d = max(max(a, d_s - rho), h);
         vec3 k = light.atten_cos_inner.xyz;
@@ -210,19 +224,31 @@ float far_support_radius(ivec2 t, Surface o) {
     return r;
 }
 
-// This pixel's bound on |far part interpolated - far part|, in linear
-// light: from the worst of its samples' terms, its own material and the
-// weighted distances to the samples. 0 where it sums its own far part;
-// 1e30 where a light straddles the plane or a term overflowed.
-float far_field_bound(Surface s, float eye_distance) {
+// The bound's terms of sample t: (H_d, G_d, H_s, G_s) and (M, straddle).
+void far_bound_fetch(ivec2 t, out vec4 terms, out vec4 extra) {
+#ifdef FAR_FIELD_SH
+    terms = texelFetch(u_far_sh1, far_texel(t), 0);
+    extra = texelFetch(u_far_sh2, far_texel(t), 0);
+#else
+    terms = texelFetch(u_far_diffuse, far_texel(t), 0);
+    extra = texelFetch(u_far_specular, far_texel(t), 0);
+#endif
+}
+
+// The samples this pixel interpolates (as far_field takes them): the
+// worst of their terms, the weighted offset |sum w_k (x_k - x)| and
+// spread sum w_k |x_k - x|^2; false when it takes none.
+bool far_bound_samples(Surface s, float eye_distance, out vec4 worst, out vec4 extra,
+                       out float off, out float spread2) {
     ivec2 t0;
     vec2 f;
     far_cell(t0, f);
     float weight = 0.0;
     vec3 centre = vec3(0.0);    // sum of w_k (x_k - x)
-    float spread2 = 0.0;        // sum of w_k |x_k - x|^2
-    vec4 worst = vec4(0.0);
-    vec4 extra = vec4(0.0);
+    spread2 = 0.0;              // sum of w_k |x_k - x|^2
+    worst = vec4(0.0);
+    extra = vec4(0.0);
+    off = 0.0;
     for (int k = 0; k < 4; ++k) {
         ivec2 t;
         Surface o;
@@ -232,20 +258,48 @@ float far_field_bound(Surface s, float eye_distance) {
         weight += w;
         centre += w * dx;
         spread2 += w * dot(dx, dx);
-        worst = max(worst, texelFetch(u_far_diffuse, far_texel(t), 0));
-        extra = max(extra, texelFetch(u_far_specular, far_texel(t), 0));
+        vec4 terms;
+        vec4 more;
+        far_bound_fetch(t, terms, more);
+        worst = max(worst, terms);
+        extra = max(extra, more);
     }
-    if (weight == 0.0) return 0.0;
-    float off = length(centre) / weight;
+    if (weight == 0.0) return false;
+    off = length(centre) / weight;
     spread2 /= weight;
-    // A sample at the pixel itself (k = 1) needs no smoothness.
-    bool smooth_needed = spread2 > 0.0;
-    if (smooth_needed && (extra.y > 0.0 || any(greaterThanEqual(worst, vec4(TERM_LIMIT)))))
-        return 1e30;
+    return true;
+}
+
+// Whether the terms give no bound: a light straddles the plane or a term
+// overflowed (a sample at the pixel itself, k = 1, needs no smoothness).
+bool far_bound_unbounded(vec4 worst, vec4 extra, float spread2) {
+    return spread2 > 0.0 && (extra.y > 0.0 || any(greaterThanEqual(worst, vec4(TERM_LIMIT))));
+}
+
+// This pixel's bound on |far part interpolated - far part|, in linear
+// light: from the worst of its samples' terms, its own material and the
+// weighted distances to the samples. 0 where it sums its own far part;
+// 1e30 where a light straddles the plane or a term overflowed.
+float far_field_bound(Surface s, float eye_distance) {
+    vec4 worst, extra;
+    float off, spread2;
+    if (!far_bound_samples(s, eye_distance, worst, extra, off, spread2)) return 0.0;
+    if (far_bound_unbounded(worst, extra, spread2)) return 1e30;
     float kd = max(s.kd.r, max(s.kd.g, s.kd.b));
     float ks = max(s.ks.r, max(s.ks.g, s.ks.b));
     return kd * (worst.y * off + 0.5 * worst.x * spread2)
         + ks * (worst.w * off + 0.5 * worst.z * spread2)
         + max(kd, ks) * extra.x * exp2(-11.0);
+}
+
+// The specular half of far_field_bound (the harmonics' far field
+// interpolates only the specular part this way).
+float far_sh_specular_bound(Surface s, float eye_distance) {
+    vec4 worst, extra;
+    float off, spread2;
+    if (!far_bound_samples(s, eye_distance, worst, extra, off, spread2)) return 0.0;
+    if (far_bound_unbounded(worst, extra, spread2)) return 1e30;
+    float ks = max(s.ks.r, max(s.ks.g, s.ks.b));
+    return ks * (worst.w * off + 0.5 * worst.z * spread2 + extra.x * exp2(-11.0));
 }
 #endif

@@ -11,6 +11,9 @@
 #ifdef FAR_FIELD
 #include "common/far_field.glsl"
 #endif
+#ifdef FAR_FIELD_SH
+#include "common/far_field_sh.glsl"
+#endif
 // R32UI: per cluster, two texels (offset, count) into the light numbers,
 // which follow from texel u_index_base; the first u_global_count of those
 // are every pixel's.
@@ -82,11 +85,16 @@ void main() {
     int count = int(texelFetch(u_clusters, 2 * cluster + 1).r);
     for (int k = 0; k < count; ++k)
         sum += shade_listed(int(texelFetch(u_clusters, offset + k).r), s, V);
-#ifdef FAR_FIELD
+#if defined(FAR_FIELD_SH)
+    sum += far_field_sh(s, V, distance(u_eye, s.P));
+#elif defined(FAR_FIELD)
     sum += far_field(s, V, distance(u_eye, s.P));
 #endif
-#ifdef FAR_FIELD_BOUND
+#if defined(FAR_FIELD_BOUND) && defined(FAR_FIELD_SH)
     // Instead of the light: the far field's error bound at this pixel.
+    light_out = vec4(vec3(far_field_sh_bound(s, distance(u_eye, s.P))), 1.0);
+    return;
+#elif defined(FAR_FIELD_BOUND)
     light_out = vec4(vec3(far_field_bound(s, distance(u_eye, s.P))), 1.0);
     return;
 #endif

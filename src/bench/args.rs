@@ -45,7 +45,9 @@ pub struct BenchArgs {
     #[arg(long, default_value_t = 3)]
     pub warmup: usize,
     /// Vary any scene key instead of the render path: KEY=V1,V2,...
-    /// (repeatable; every combination is measured). See src/bench/variants.rs.
+    /// (repeatable; every combination is measured). A value with ';' is one
+    /// setting of its own, KEY=V;KEY=V, measured after the combinations
+    /// (`--vary 'render.path=tiled;render.far_field=4'`). See src/bench/variants.rs.
     #[arg(long, value_name = "KEY=V1,V2")]
     pub vary: Vec<String>,
     /// With --vary: the reference image's settings, KEY=VALUE (repeatable;

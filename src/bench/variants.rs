@@ -5,6 +5,9 @@
 //! (same parser, same checks). The reference is the scene with the
 //! `--reference` keys set (by default, the scene as written).
 //!
+//! A `--vary` value with ';' in it is one setting of its own, `KEY=V;KEY=V`,
+//! measured after the combinations (settings that are no product of lists).
+//!
 //! For example, the mirror's orders and recursion depths against the
 //! deepest reflection:
 //!
@@ -50,7 +53,18 @@ pub(super) fn run(
     ctx: &Headless,
     software: bool,
 ) -> Result<()> {
-    let combos = combinations(&args.vary)?;
+    // A `--vary` with ';' is one setting (its keys), after the combinations.
+    let (cases, vary): (Vec<&String>, Vec<&String>) =
+        args.vary.iter().partition(|v| v.contains(';'));
+    let vary: Vec<String> = vary.into_iter().cloned().collect();
+    let mut combos = combinations(&vary)?;
+    for c in cases {
+        let keys: Vec<String> = c.split(';').map(|k| k.trim().to_string()).collect();
+        if keys.iter().any(|k| !k.contains('=')) {
+            bail!("--vary {c}: expected KEY=VALUE;KEY=VALUE... for one setting");
+        }
+        combos.push(keys);
+    }
     let sized = |mut s: Scene| {
         if let Some(size) = args.size {
             s.render.size = size;

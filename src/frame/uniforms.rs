@@ -78,6 +78,12 @@ pub mod unit {
     /// promises a fragment shader are taken.
     pub const FAR_DIFFUSE: u32 = 14;
     pub const FAR_SPECULAR: u32 = 15;
+    /// The far field's harmonics past their first four floats
+    /// (glsl/common/far_field_sh.glsl, `render.far_field_sh`), read by tiled
+    /// shading: 27-31, past the units taken, and 18, glTF's
+    /// metallic-roughness map, which only geometry passes read (no geometry
+    /// pass is a lighting pass of tiled shading).
+    pub const FAR_SH: [u32; 6] = [27, 28, 29, 30, 31, 18];
     /// The environment cube map (`u_environment`, glsl/common/environment.glsl):
     /// FAR_DIFFUSE's unit, which only tiled shading's lighting pass reads, and
     /// no pass reads both.

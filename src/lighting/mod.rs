@@ -10,6 +10,7 @@ pub mod ambient_occlusion;
 pub mod area_light;
 pub mod attenuation;
 pub mod bvh;
+pub mod far_field_sh;
 pub mod image_based_lighting;
 pub mod ltc;
 pub mod microfacet;

@@ -55,3 +55,14 @@ pub const PARALLAX_LAYERS: std::ops::RangeInclusive<u32> = 1..=256;
 
 /// The sample counts `render.msaa` takes.
 pub const MSAA_SAMPLES: [u32; 4] = [1, 2, 4, 8];
+
+/// The camera's defaults in the scene file (file.rs's `[camera]`).
+pub(super) fn default_fov() -> f32 {
+    50.0
+}
+pub(super) fn default_near() -> f32 {
+    0.1
+}
+pub(super) fn default_far() -> f32 {
+    100.0
+}

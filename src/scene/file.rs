@@ -79,13 +79,13 @@ pub(super) struct CameraFile {
     pub(super) target: [f32; 3],
     #[serde(default = "up_y")]
     pub(super) up: [f32; 3],
-    #[serde(default = "default_fov")]
+    #[serde(default = "super::checks::default_fov")]
     pub(super) fov_y: f32,
     /// Orthographic: half the height of the view box (width follows the aspect).
     pub(super) half_height: Option<f32>,
-    #[serde(default = "default_near")]
+    #[serde(default = "super::checks::default_near")]
     pub(super) near: f32,
-    #[serde(default = "default_far")]
+    #[serde(default = "super::checks::default_far")]
     pub(super) far: f32,
 }
 
@@ -94,15 +94,6 @@ fn perspective_str() -> String {
 }
 fn up_y() -> [f32; 3] {
     [0.0, 1.0, 0.0]
-}
-fn default_fov() -> f32 {
-    50.0
-}
-fn default_near() -> f32 {
-    0.1
-}
-fn default_far() -> f32 {
-    100.0
 }
 
 #[derive(Deserialize, Debug)]
@@ -122,6 +113,8 @@ pub(super) struct RenderFile {
     pub(super) tile_size: u32,
     pub(super) depth_slices: u32,
     pub(super) far_field: u32,
+    pub(super) far_field_sh: bool,
+    pub(super) near_radius: f32,
     pub(super) mirror_order: MirrorOrder,
     /// How many mirrors deep reflections go (1: mirrors seen in a mirror are blank).
     pub(super) mirror_depth: u32,
@@ -191,6 +184,8 @@ impl Default for RenderFile {
             tile_size: 16,
             depth_slices: 16,
             far_field: 0,
+            far_field_sh: false,
+            near_radius: 1.0,
             mirror_order: MirrorOrder::NormalFirst,
             mirror_depth: 1,
             mirror_clip: true,

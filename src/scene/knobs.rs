@@ -23,7 +23,7 @@ pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
 pub use instancing::{INSTANCING, NORMAL_LENGTH, SHOW_NORMALS};
 pub use lighting::{
     ACCUMULATION, AREA_LIGHTS, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD,
-    GBUFFER_ENCODING, STENCIL_VOLUMES, TILE_SIZE,
+    FAR_FIELD_SH, GBUFFER_ENCODING, NEAR_RADIUS, STENCIL_VOLUMES, TILE_SIZE,
 };
 pub use parallax::{PARALLAX, PARALLAX_LAYERS, PARALLAX_SHADOWS, PARALLAX_UV};
 pub use sky::{IBL, SKY_FIRST};
@@ -344,6 +344,8 @@ pub static ALL: &[&Knob] = &[
     &MSAA,
     &SKINNING_ON,
     &JOINT_STORAGE,
+    &FAR_FIELD_SH,
+    &NEAR_RADIUS,
 ];
 
 /// Whether a switch applies to a scene (it has what the technique draws).

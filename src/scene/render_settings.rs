@@ -74,6 +74,16 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             r.far_field
         },
         far_field_bound: false,
+        far_field_sh: r.far_field_sh,
+        near_radius: {
+            if !(r.near_radius.is_finite() && r.near_radius > 0.0 && r.near_radius <= 1.0) {
+                bail!(
+                    "render.near_radius: expected the near part's end as a fraction of each light's cutoff radius, in (0, 1], found {}",
+                    r.near_radius
+                );
+            }
+            r.near_radius
+        },
         depth_slices: {
             if !(DEPTH_SLICES).contains(&r.depth_slices) {
                 bail!(
@@ -227,6 +237,13 @@ pub struct RenderSettings {
     /// Not in the scene file: `gloss bench` sets it to render, instead of
     /// the light, the far field's per-pixel error bound (far_field.rs).
     pub far_field_bound: bool,
+    /// Tiled shading's far field stores the diffuse far light as order-2
+    /// spherical harmonics, which every pixel evaluates for its own normal
+    /// (glsl/common/far_field_sh.glsl).
+    pub far_field_sh: bool,
+    /// With the far field: where each light's near part ends, as a fraction
+    /// of its cutoff radius (1: at the radius); tiled shading bins at it.
+    pub near_radius: f32,
     /// Planar mirrors (notes 05): the order of their passes, how deep
     /// reflections recurse, the clip plane and the winding fix (toggles that
     /// show what goes wrong without them).

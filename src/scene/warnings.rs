@@ -132,6 +132,12 @@ impl Scene {
                 r.depth_slices.to_string(),
             ),
             ("far_field", r.far_field != 0, r.far_field.to_string()),
+            ("far_field_sh", r.far_field_sh, r.far_field_sh.to_string()),
+            (
+                "near_radius",
+                r.near_radius != 1.0,
+                r.near_radius.to_string(),
+            ),
         ] {
             warn(
                 key,

@@ -31,6 +31,7 @@ mod ambient_light;
 mod deferred_lighting;
 mod deferred_shading;
 mod far_field;
+mod far_field_sh;
 mod light_volumes;
 mod numeric_edges;
 mod numeric_sweep;

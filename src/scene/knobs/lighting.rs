@@ -106,6 +106,36 @@ pub static FAR_FIELD: Knob = Knob {
     },
 };
 
+pub static FAR_FIELD_SH: Knob = Knob {
+    key: "render.far_field_sh",
+    label: "far field as harmonics",
+    help: "tiled shading's far field: the diffuse far light as order-2 spherical harmonics per sample, evaluated at each pixel's own normal (curved surfaces too)",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.far_field_sh),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.far_field_sh = b;
+        }
+    },
+};
+
+pub static NEAR_RADIUS: Knob = Knob {
+    key: "render.near_radius",
+    label: "near radius",
+    help: "tiled shading with a far field: each light's near part (binned per tile) ends at this fraction of its cutoff radius; the far field takes the rest",
+    kind: Kind::Number {
+        min: 0.05,
+        max: 1.0,
+        log: false,
+    },
+    get: |r| Value::Number(r.near_radius),
+    set: |r, v| {
+        if let Value::Number(x) = v {
+            r.near_radius = x;
+        }
+    },
+};
+
 pub static DEPTH_SLICES: Knob = Knob {
     key: "render.depth_slices",
     label: "depth slices",

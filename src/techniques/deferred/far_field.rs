@@ -56,10 +56,16 @@ pub const FAR_FIELD: Technique = Technique {
         "common/fullscreen.vert",
         "deferred/far_field.frag",
         "common/far_field.glsl",
+        "common/far_field_sh.glsl",
     ],
     scene: "scenes/far-field.toml",
     docs: "docs/deferred/far_field.md",
-    knobs: &[&knobs::FAR_FIELD, &knobs::CUTOFF],
+    knobs: &[
+        &knobs::FAR_FIELD,
+        &knobs::FAR_FIELD_SH,
+        &knobs::NEAR_RADIUS,
+        &knobs::CUTOFF,
+    ],
     passes,
     targets,
     create,
@@ -84,19 +90,40 @@ pub fn runs(scene: &Scene, lights: &FrameLights) -> bool {
 }
 
 /// How far a sample's surface point may be from the pixel it stands for:
-/// half the smallest near radius (`NEAR_INNER x r`), the shortest distance
-/// over which a far part changes much. 0 (every pixel sums its own far
-/// part) when no light has a positive radius.
-pub fn reach(lights: &FrameLights) -> f32 {
+/// half the smallest near part's inner radius (`NEAR_INNER x near_radius x
+/// r`), the shortest distance over which a far part changes much. 0 (every
+/// pixel sums its own far part) when no light has a positive radius.
+pub fn reach(scene: &Scene, lights: &FrameLights) -> f32 {
     let r = (lights.lights.iter())
         .filter_map(|l| l.radius)
         .filter(|&r| r > 0.0)
         .fold(f32::INFINITY, f32::min);
     if r.is_finite() {
-        0.5 * NEAR_INNER * r
+        0.5 * NEAR_INNER * scene.render.near_radius * r
     } else {
         0.0
     }
+}
+
+/// The far field's attachments: diffuse and specular light; with
+/// `render.far_field_sh`, the harmonics' 27 floats around the specular
+/// light (glsl/common/far_field_sh.glsl says where each float goes).
+fn attachments(scene: &Scene) -> Vec<(&'static str, u32)> {
+    let names: &[&'static str] = if scene.render.far_field_sh {
+        &[
+            "harmonics 0-3",
+            "specular",
+            "harmonics 4-7",
+            "harmonics 8-11",
+            "harmonics 12-15",
+            "harmonics 16-19",
+            "harmonics 20-23",
+            "harmonics 24-26",
+        ]
+    } else {
+        &["diffuse", "specular"]
+    };
+    names.iter().map(|&n| (n, glow::RGBA16F)).collect()
 }
 
 fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
@@ -109,9 +136,20 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     let n = (lights.lights.iter())
         .filter(|l| l.radius.is_some())
         .count();
-    let draws = format!(
-        "1 full-screen triangle at {sw}x{sh} (one sample per {k}x{k} pixels): the far part of {n} lights"
+    let mut draws = format!(
+        "1 full-screen triangle at {sw}x{sh} (one sample per {k}x{k} pixels): the far part of {n} lights, "
     );
+    draws.push_str(if scene.render.far_field_sh {
+        "diffuse as order-2 spherical harmonics"
+    } else {
+        "diffuse at the sample's normal"
+    });
+    if scene.render.near_radius < 1.0 {
+        draws.push_str(&format!(
+            "; near part to {} x the cutoff radius",
+            scene.render.near_radius
+        ));
+    }
     let variant = LightingVariant::of(scene, lights).describe();
     vec![Pass::new("far field", TARGET, draws, file!()).with_variant(variant)]
 }
@@ -123,7 +161,7 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
     vec![TargetDesc {
         name: TARGET,
         samples: 1,
-        colors: vec![("diffuse", glow::RGBA16F), ("specular", glow::RGBA16F)],
+        colors: attachments(scene),
         depth: Depth::None,
         ping_pong: false,
         mips: None,
@@ -135,6 +173,9 @@ struct FarField {
     program: Program,
     /// Writes each sample's error-bound terms instead (render.far_field_bound).
     bound: Program,
+    /// The same two with the diffuse part as harmonics (render.far_field_sh).
+    harmonics: Program,
+    harmonics_bound: Program,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -145,12 +186,25 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     // Specialised to the frame (src/frame/variant.rs), like the pass that reads it.
     let program = p.build_variant(&stages)?;
     let bound = p.build_variant_with(&stages, &[("FAR_FIELD_BOUND", "1".into())])?;
-    for program in [&program, &bound] {
+    let harmonics = p.build_variant_with(&stages, &[("FAR_FIELD_SH", "1".into())])?;
+    let harmonics_bound = p.build_variant_with(
+        &stages,
+        &[
+            ("FAR_FIELD_SH", "1".into()),
+            ("FAR_FIELD_BOUND", "1".into()),
+        ],
+    )?;
+    for program in [&program, &bound, &harmonics, &harmonics_bound] {
         // casts_shadow reads the Shadows block (common/shadow.glsl).
         program.bind_uniform_block("Lights", LIGHTS_BINDING);
         shadows::setup_program(program);
     }
-    Ok(Box::new(FarField { program, bound }))
+    Ok(Box::new(FarField {
+        program,
+        bound,
+        harmonics,
+        harmonics_bound,
+    }))
 }
 
 /// Bind the far field's textures for tiled shading's pass and set the
@@ -159,27 +213,48 @@ pub fn bind_for_reading(f: &Frame, p: &Program) {
     let target = f.targets.get(TARGET);
     let gl = f.gl;
     unsafe {
-        for (i, (name, u)) in [
-            ("u_far_diffuse", unit::FAR_DIFFUSE),
-            ("u_far_specular", unit::FAR_SPECULAR),
-        ]
-        .into_iter()
-        .enumerate()
-        {
+        for (i, (name, u)) in reading_units().into_iter().enumerate() {
+            let Some(texture) = target.colors.get(i) else {
+                break;
+            };
             gl.active_texture(glow::TEXTURE0 + u);
-            gl.bind_texture(glow::TEXTURE_2D, Some(target.colors[i].id));
+            gl.bind_texture(glow::TEXTURE_2D, Some(texture.id));
             p.set_i32(name, u as i32);
         }
         gl.active_texture(glow::TEXTURE0);
     }
-    p.set_i32("u_far_scale", f.scene.render.far_field as i32);
-    p.set_i32("u_light_count", f.lights.len() as i32);
-    p.set_f32("u_far_reach", reach(f.lights));
+    set_uniforms(f, p);
 }
 
-pub fn unbind_textures(gl: &glow::Context) {
+/// Each attachment's sampler and unit in the pass that reads them, in the
+/// attachments' order.
+fn reading_units() -> [(&'static str, u32); 8] {
+    let sh = unit::FAR_SH;
+    [
+        ("u_far_diffuse", unit::FAR_DIFFUSE),
+        ("u_far_specular", unit::FAR_SPECULAR),
+        ("u_far_sh1", sh[0]),
+        ("u_far_sh2", sh[1]),
+        ("u_far_sh3", sh[2]),
+        ("u_far_sh4", sh[3]),
+        ("u_far_sh5", sh[4]),
+        ("u_far_sh6", sh[5]),
+    ]
+}
+
+/// The uniforms glsl/common/far_field.glsl reads in both passes.
+fn set_uniforms(f: &Frame, p: &Program) {
+    p.set_i32("u_far_scale", f.scene.render.far_field as i32);
+    p.set_i32("u_light_count", f.lights.len() as i32);
+    p.set_f32("u_far_reach", reach(f.scene, f.lights));
+    p.set_f32("u_near_scale", f.scene.render.near_radius);
+}
+
+pub fn unbind_textures(f: &Frame) {
+    let gl = f.gl;
+    let n = f.targets.get(TARGET).colors.len();
     unsafe {
-        for u in [unit::FAR_DIFFUSE, unit::FAR_SPECULAR] {
+        for (_, u) in reading_units().into_iter().take(n) {
             gl.active_texture(glow::TEXTURE0 + u);
             gl.bind_texture(glow::TEXTURE_2D, None);
         }
@@ -189,10 +264,12 @@ pub fn unbind_textures(gl: &glow::Context) {
 
 impl RunPasses for FarField {
     fn run(&self, _: &Pass, f: &Frame) {
-        let p = if f.scene.render.far_field_bound {
-            &self.bound
-        } else {
-            &self.program
+        let r = &f.scene.render;
+        let p = match (r.far_field_sh, r.far_field_bound) {
+            (false, false) => &self.program,
+            (false, true) => &self.bound,
+            (true, false) => &self.harmonics,
+            (true, true) => &self.harmonics_bound,
         };
         let (gl, u) = (f.gl, f.uniforms);
         let target = f.targets.get(TARGET);
@@ -213,9 +290,7 @@ impl RunPasses for FarField {
             gl.active_texture(glow::TEXTURE0);
             p.set_i32("u_light_data", unit::TILED_LIGHTS as i32);
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
-            p.set_i32("u_far_scale", k);
-            p.set_i32("u_light_count", f.lights.len() as i32);
-            p.set_f32("u_far_reach", reach(f.lights));
+            set_uniforms(f, p);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             f.shadows.bind(gl);
             f.meshes.fullscreen.draw();

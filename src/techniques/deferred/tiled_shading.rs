@@ -141,12 +141,19 @@ pub fn bounding_sphere(l: &Light, radius: f32) -> (Vec3, f32) {
 /// pixel) without a radius; apart for the lights in `casting` (those with a
 /// shadow map this frame), which the shader shades in a loop of their own
 /// (`caster(k)`, glsl/common/shadow.glsl).
+/// With the far field, the sphere is the near part's: `render.near_radius`
+/// times the cutoff radius.
 pub fn light_bounds(scene: &Scene, lights: &FrameLights, casting: &[usize]) -> Vec<Bound> {
+    let near = if far_field::runs(scene, lights) {
+        scene.render.near_radius
+    } else {
+        1.0
+    };
     (scene.lights.iter().zip(&lights.lights).enumerate())
         .map(|(i, (l, f))| match (casting.contains(&i), f.radius) {
             (true, _) => Bound::Apart,
             (false, Some(r)) => {
-                let (c, r) = bounding_sphere(l, r);
+                let (c, r) = bounding_sphere(l, near * r);
                 Bound::Sphere(c, r)
             }
             (false, None) => Bound::Everywhere,
@@ -161,6 +168,10 @@ struct TiledShading {
     /// Drawing the far field's error bound instead of the light
     /// (`render.far_field_bound`, set by `gloss bench`).
     far_field_bound: Program,
+    /// The same two with the far field's diffuse part as harmonics
+    /// (`render.far_field_sh`, glsl/common/far_field_sh.glsl).
+    with_harmonics: Program,
+    harmonics_bound: Program,
     /// Each cluster's (offset, count), then the light numbers.
     clusters: TextureBuffer,
 }
@@ -177,7 +188,25 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         &stages,
         &[("FAR_FIELD", "1".into()), ("FAR_FIELD_BOUND", "1".into())],
     )?;
-    for program in [&program, &with_far_field, &far_field_bound] {
+    let with_harmonics = p.build_variant_with(
+        &stages,
+        &[("FAR_FIELD", "1".into()), ("FAR_FIELD_SH", "1".into())],
+    )?;
+    let harmonics_bound = p.build_variant_with(
+        &stages,
+        &[
+            ("FAR_FIELD", "1".into()),
+            ("FAR_FIELD_SH", "1".into()),
+            ("FAR_FIELD_BOUND", "1".into()),
+        ],
+    )?;
+    for program in [
+        &program,
+        &with_far_field,
+        &far_field_bound,
+        &with_harmonics,
+        &harmonics_bound,
+    ] {
         // shadow_visibility reads the caster from the Lights block (the
         // casters are among the lights the block holds: check_lights_fit).
         program.bind_uniform_block("Lights", LIGHTS_BINDING);
@@ -187,6 +216,8 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         program,
         with_far_field,
         far_field_bound,
+        with_harmonics,
+        harmonics_bound,
         clusters: TextureBuffer::new(p.gl, glow::R32UI)?,
     }))
 }
@@ -231,10 +262,13 @@ impl RunPasses for TiledShading {
 
         // 3. One full-screen pass over the G-buffer.
         let far = far_field::runs(f.scene, f.lights);
-        let p = match (far, f.scene.render.far_field_bound) {
-            (true, true) => &self.far_field_bound,
-            (true, false) => &self.with_far_field,
-            (false, _) => &self.program,
+        let r = &f.scene.render;
+        let p = match (far, r.far_field_sh, r.far_field_bound) {
+            (true, false, true) => &self.far_field_bound,
+            (true, false, false) => &self.with_far_field,
+            (true, true, true) => &self.harmonics_bound,
+            (true, true, false) => &self.with_harmonics,
+            (false, _, _) => &self.program,
         };
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
@@ -274,7 +308,7 @@ impl RunPasses for TiledShading {
 
             f.shadows.unbind(gl);
             if far {
-                far_field::unbind_textures(gl);
+                far_field::unbind_textures(f);
             }
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, None);
             for unit in [unit::TILED_LIGHTS, unit::TILED_CLUSTERS] {

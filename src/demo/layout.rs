@@ -7,8 +7,10 @@
 //!
 //! `{"label":"outlines","kind":"CheckBox","input":true,"rect":[x0,y0,x1,y1],"toggled":true}`
 //!
-//! (a choice among words also says which knob it is `"in"`: `"label":"volumes",
-//! ... "in":"lighting path"`; a number its `"value"`).
+//! (`"about"`: the widget's description, for a choice among words the knob
+//! it belongs to, `"label":"volumes", ... "about":"lighting path"`, else its
+//! hover text; `"value"`: a number's value; `"text"`: a text field's or
+//! drop-down's text).
 //!
 //! `rect` in window pixels from the top left (egui points times the pixels
 //! per point). The names are egui's accessibility tree (AccessKit), which
@@ -96,7 +98,12 @@ impl Layout {
                 rect[3]
             );
             if let Some(d) = node.description() {
-                line.push_str(&format!(",\"in\":{}", json(d)));
+                line.push_str(&format!(",\"about\":{}", json(d)));
+            }
+            if node.role() != Role::Label
+                && let Some(v) = node.value()
+            {
+                line.push_str(&format!(",\"text\":{}", json(v)));
             }
             if let Some(t) = node.toggled() {
                 line.push_str(&format!(",\"toggled\":{}", t == Toggled::True));

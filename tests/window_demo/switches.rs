@@ -80,7 +80,7 @@ fn the_instancing_checkbox_switches_to_one_draw_per_rock_and_the_same_image() {
         start --window 1280x1000 rocks.toml
         sleep 2
         key F12; shot 1
-        widget "instanced draw" > box
+        scroll_to "instanced draw" > box
         key shift+F12; shot 2
         click_widget "instanced draw"
         sleep 1

@@ -40,7 +40,9 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
                 // the scene file holds them); brighter ones are typed.
                 if c.max_element() <= 1.0 {
                     let mut rgb = c.to_array();
-                    if ui.color_edit_button_rgb(&mut rgb).changed() {
+                    // egui names the button "Color": the knob names it.
+                    let r = ui.color_edit_button_rgb(&mut rgb).labelled_by(label.id);
+                    if r.changed() {
                         *c = glam::Vec3::from_array(rgb);
                     }
                 }

@@ -250,13 +250,15 @@ impl PanelState {
                         }
                     });
                 ui.horizontal(|ui| {
-                    ui.text_edit_singleline(&mut self.path_text);
+                    ui.text_edit_singleline(&mut self.path_text)
+                        .accessible_name("scene path");
                     if ui.button("open").clicked() {
                         actions.push(Action::Load(PathBuf::from(self.path_text.trim())));
                     }
                 });
                 ui.horizontal(|ui| {
-                    ui.text_edit_singleline(&mut self.save_text);
+                    ui.text_edit_singleline(&mut self.save_text)
+                        .accessible_name("file to save as");
                     if ui.button("save as").clicked() {
                         actions.push(Action::SaveAs(PathBuf::from(self.save_text.trim())));
                     }

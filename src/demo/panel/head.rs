@@ -50,10 +50,11 @@ impl PanelState {
     pub(super) fn top(&mut self, ui: &mut egui::Ui, input: &PanelInput) {
         ui.horizontal(|ui| {
             ui.heading("gloss");
-            ui.label(self.frame_time());
+            // The button before the frame time, whose width changes.
             if ui.small_button("hide (Tab)").clicked() {
                 self.open = false;
             }
+            ui.label(self.frame_time());
         });
         ui.small(input.gl_info);
         ui.horizontal(|ui| {

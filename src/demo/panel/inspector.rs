@@ -34,7 +34,9 @@ impl PanelState {
                                 actions.push(Action::Inspect(i));
                             }
                         }
-                    });
+                    })
+                    .response
+                    .accessible_name("inspector view");
                 ui.checkbox(&mut self.thumbnails, "thumbnails (click one to view it)");
                 if self.thumbnails {
                     egui::ScrollArea::horizontal().show(ui, |ui| {

@@ -9,9 +9,12 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
     let before = (k.get)(settings);
     let mut after = before;
     ui.horizontal(|ui| {
-        ui.label(k.label)
+        let label = ui
+            .label(k.label)
             .on_hover_text(format!("{}\n{}", k.key, k.help));
-        match (k.kind, &mut after) {
+        // The controls are named by the label (egui's accessibility tree,
+        // which the window tests read: src/demo/layout.rs).
+        ui.label_inputs_by(label.id, |ui| match (k.kind, &mut after) {
             (Kind::Bool, Value::Bool(b)) => {
                 ui.checkbox(b, "");
             }
@@ -23,7 +26,10 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
             }
             (Kind::Choice(words), Value::Choice(i)) => {
                 for (j, w) in words.iter().enumerate() {
-                    ui.selectable_value(i, j, *w);
+                    let r = ui.selectable_value(i, j, *w);
+                    // Each choice is named by its word, described by the knob.
+                    ui.ctx()
+                        .accesskit_node_builder(r.id, |n| n.set_description(k.label));
                 }
             }
             (Kind::Color, Value::Color(c)) => {
@@ -34,7 +40,9 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
                 // the scene file holds them); brighter ones are typed.
                 if c.max_element() <= 1.0 {
                     let mut rgb = c.to_array();
-                    if ui.color_edit_button_rgb(&mut rgb).changed() {
+                    // egui names the button "Color": the knob names it.
+                    let r = ui.color_edit_button_rgb(&mut rgb).labelled_by(label.id);
+                    if r.changed() {
                         *c = glam::Vec3::from_array(rgb);
                     }
                 }
@@ -42,7 +50,7 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
             _ => {
                 ui.label("?");
             }
-        }
+        });
     });
     if after != before {
         (k.set)(settings, after);

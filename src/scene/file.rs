@@ -152,6 +152,10 @@ pub(super) struct RenderFile {
     /// Draw every opaque object's vertex normals as lines (a geometry shader).
     pub(super) show_normals: bool,
     pub(super) normal_length: f32,
+    /// Draw the opaque objects exploded: each triangle moved along its face
+    /// normal by a geometry shader (vertex_geometry/exploding_objects.rs).
+    pub(super) explode: bool,
+    pub(super) explode_magnitude: f32,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
     pub(super) texture_filter: super::texturing::FilterOverride,
@@ -209,6 +213,8 @@ impl Default for RenderFile {
             instancing: true,
             show_normals: false,
             normal_length: 0.2,
+            explode: false,
+            explode_magnitude: 0.5,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
             texture_filter: super::texturing::FilterOverride::Material,

@@ -20,7 +20,7 @@ mod stencil;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
-pub use instancing::{INSTANCING, NORMAL_LENGTH, SHOW_NORMALS};
+pub use instancing::{EXPLODE, EXPLODE_MAGNITUDE, INSTANCING, NORMAL_LENGTH, SHOW_NORMALS};
 pub use lighting::{
     ACCUMULATION, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD, GBUFFER_ENCODING,
     STENCIL_VOLUMES, TILE_SIZE,
@@ -328,6 +328,8 @@ pub static ALL: &[&Knob] = &[
     &INSTANCING,
     &SHOW_NORMALS,
     &NORMAL_LENGTH,
+    &EXPLODE,
+    &EXPLODE_MAGNITUDE,
     &TEXTURE_FILTER,
     &INTERPOLATION,
     &MIP_COLORS,
@@ -355,6 +357,7 @@ pub type AppliesTo = fn(&super::Scene) -> bool;
 pub static SWITCHES: &[(&Knob, AppliesTo)] = &[
     (&OUTLINES, |s| s.outlines.is_some()),
     (&SHOW_NORMALS, |s| s.opaque_objects() > 0),
+    (&EXPLODE, |s| s.opaque_objects() > 0),
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

@@ -9,7 +9,7 @@
 //! * a shadow edge that runs across a split is right on both sides of it
 //!   and inside the blend band: no gap, no double shadow;
 //! * moving the camera sideways a fraction of a texel a frame, or orbiting
-//!   it a quarter of a degree a frame, the shadow edges of stable cascades
+//!   it a degree a frame, the shadow edges of stable cascades
 //!   stay put in the world and those of tight cascades shimmer.
 
 use crate::common;
@@ -290,7 +290,7 @@ fn moving_the_camera_a_fraction_of_a_texel_stable_cascades_do_not_shimmer() {
         f.camera.target += step * k as f32;
     });
     eprintln!("camera moved sideways: floor pixels whose shadow moved, stable {stable}, tight {tight}");
-    // Measured on llvmpipe: stable 0, tight 356 pixels over five pairs.
+    // Measured on llvmpipe: stable 0, tight 253 pixels over five pairs.
     assert!(
         tight > 100 && stable * 10 <= tight,
         "floor pixels whose shadow moved from frame to frame: stable {stable}, tight {tight}"
@@ -300,16 +300,18 @@ fn moving_the_camera_a_fraction_of_a_texel_stable_cascades_do_not_shimmer() {
 #[test]
 fn orbiting_the_camera_in_small_steps_stable_cascades_do_not_shimmer() {
     // The case: an orbiting camera, measured frame to frame. The
-    // eye turns about the target around the vertical axis, a quarter of a
-    // degree a frame: the view's frustum turns, so tight cascades' boxes
-    // change size and their texel grids slide; the stable cascades' bounding
-    // spheres keep their size and their boxes snap to whole texels.
+    // eye turns about the target around the vertical axis, a degree a
+    // frame: the view's frustum turns, so tight cascades' boxes change size
+    // and their texel grids slide; the stable cascades' bounding spheres
+    // keep their size and their boxes snap to whole texels. (At a quarter
+    // of a degree a frame tight cascades moved only 33 pixels.)
     let ctx = common::context(common::backend());
     let (stable, tight) = shimmer(&ctx, |f, k| {
-        let turn = glam::Quat::from_rotation_y((0.25 * k as f32).to_radians());
+        let turn = glam::Quat::from_rotation_y((1.0 * k as f32).to_radians());
         f.camera.eye = f.camera.target + turn * (f.camera.eye - f.camera.target);
     });
     eprintln!("camera orbiting: floor pixels whose shadow moved, stable {stable}, tight {tight}");
+    // Measured on llvmpipe: stable 3, tight 414 pixels over five pairs.
     assert!(
         tight > 100 && stable * 10 <= tight,
         "floor pixels whose shadow moved from frame to frame: stable {stable}, tight {tight}"

@@ -176,7 +176,10 @@ fn at_magnitude_zero_every_corner_is_forwards_own_bit_for_bit() {
     let zero = captured(&ctx, &mesh, model, 0.0, 1.3);
     assert_eq!(whole.len(), zero.len());
     for (k, (a, b)) in whole.iter().zip(&zero).enumerate() {
-        assert_eq!(a, b, "corner {k}: forward.vert {a}, exploded at magnitude 0 {b}");
+        assert_eq!(
+            a, b,
+            "corner {k}: forward.vert {a}, exploded at magnitude 0 {b}"
+        );
     }
 }
 
@@ -206,7 +209,10 @@ fn magnitude_zero_is_the_unexploded_image() {
         }
     }
     eprintln!("magnitude 0: {differ} pixels differ from the whole image, by at most {worst}/255");
-    assert!(worst <= 1 && differ <= 4, "{differ} pixels differ, by up to {worst}/255");
+    assert!(
+        worst <= 1 && differ <= 4,
+        "{differ} pixels differ, by up to {worst}/255"
+    );
     // Exploded, the pieces have moved: the image is not the whole one.
     let c = common::render_with(&ctx, &scene, Output::Srgb8).image;
     let moved = a.pixels().zip(c.pixels()).filter(|(x, y)| x != y).count();

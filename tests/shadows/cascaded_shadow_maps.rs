@@ -289,7 +289,9 @@ fn moving_the_camera_a_fraction_of_a_texel_stable_cascades_do_not_shimmer() {
         f.camera.eye += step * k as f32;
         f.camera.target += step * k as f32;
     });
-    eprintln!("camera moved sideways: floor pixels whose shadow moved, stable {stable}, tight {tight}");
+    eprintln!(
+        "camera moved sideways: floor pixels whose shadow moved, stable {stable}, tight {tight}"
+    );
     // Measured on llvmpipe: stable 0, tight 253 pixels over five pairs.
     assert!(
         tight > 100 && stable * 10 <= tight,

@@ -64,7 +64,10 @@ pub const EXPLODING_OBJECTS: Technique = Technique {
 
 /// The program's stages, for the tests that capture its triangles.
 pub const STAGES: [(u32, &str); 3] = [
-    (glow::VERTEX_SHADER, "vertex_geometry/exploding_objects.vert"),
+    (
+        glow::VERTEX_SHADER,
+        "vertex_geometry/exploding_objects.vert",
+    ),
     (
         glow::GEOMETRY_SHADER,
         "vertex_geometry/exploding_objects.geom",

@@ -219,6 +219,19 @@ impl Demo {
         // menu open over the view).
         let used = (run.egui.egui_ctx.globally_used_rect()).union(run.panel.drawn);
         let ppp = run.egui.egui_ctx.pixels_per_point();
+        if let Some(layout) = run.layout.as_mut() {
+            let [x, y, vw, vh] = run.view.map(|v| v as f32 / ppp);
+            let view = egui::Rect::from_min_size(egui::pos2(x, y), egui::vec2(vw, vh));
+            let areas = [
+                ("3D view", "view", Some(view)),
+                ("panel", "panel", run.panel.rect),
+            ]
+            .into_iter()
+            .chain([("panel scroll", "scroll area", run.panel.scroll)])
+            .filter_map(|(l, k, r)| Some((l, k, r?)))
+            .collect::<Vec<_>>();
+            layout.write(ppp, (w, h), &areas)?;
+        }
         run.panel_layer.set_area(used, ppp, lh);
         // egui animates (a panel sliding open): draw it again next frame.
         if run.egui.egui_ctx.has_requested_repaint() {

@@ -12,7 +12,8 @@
 //! `screenshot`, `orbit` (the camera), `shaders` (live reload of glsl/),
 //! `present` (the blit to the window and the state restore after egui),
 //! `pictures` (`gloss render --target` for the shadow maps and mip levels),
-//! `post_chain` (the panel's chain edits checked, the chain's images named).
+//! `post_chain` (the panel's chain edits checked, the chain's images named),
+//! `layout` (where the panel's widgets are, for the window tests).
 
 mod actions;
 mod clock;
@@ -22,6 +23,7 @@ mod input;
 mod inspect_views;
 pub mod inspector;
 mod keys;
+pub mod layout;
 mod orbit;
 pub mod panel;
 mod panel_layer;
@@ -147,6 +149,9 @@ struct Running {
     inspect_fb: Option<Framebuffer>,
     /// The panel, drawn when due and laid over every frame.
     panel_layer: panel_layer::PanelLayer,
+    /// Where the panel's widgets are, written after each egui pass
+    /// (`GLOSS_DEMO_LAYOUT`).
+    layout: Option<layout::Layout>,
     ctx: WindowContext,
     /// What the panel lists and names, found once: the shipped scenes, the GL.
     shipped: Vec<String>,
@@ -227,6 +232,7 @@ impl Demo {
         // No animations: at a few frames a second (llvmpipe) they only
         // leave the panel half open when a screenshot is taken.
         egui.egui_ctx.all_styles_mut(|s| s.animation_time = 0.0);
+        let layout = layout::Layout::from_env(&egui.egui_ctx);
         let mut panel = PanelState::new(&self.scene_path.display().to_string());
         panel.open = self.options.panel;
         panel.pass_times = self.options.pass_times;
@@ -242,6 +248,7 @@ impl Demo {
             inspected: None,
             inspect_fb: None,
             panel_layer: panel_layer::PanelLayer::new(&ctx.gl, &self.sources)?,
+            layout,
             shipped: crate::assets::shipped_scenes(),
             gl_info: format!(
                 "{} — OpenGL {}.{} core",

@@ -66,7 +66,9 @@ fn a_drag_that_starts_on_a_widget_does_not_move_the_camera() {
         key F12; shot 1
         # The "Scene" section's header, a widget, pressed as the pointer
         # arrives, dragged over the view and released there.
-        xdotool mousemove 45 114 mousedown 1 mousemove 400 300 mousemove 700 400 mouseup 1
+        read -r x0 y0 x1 y1 <<< "$(widget Scene)"
+        xdotool mousemove $(( (x0 + x1) / 2 )) $(( (y0 + y1) / 2 )) \
+            mousedown 1 mousemove 400 300 mousemove 700 400 mouseup 1
         key F12; shot 2
         xdotool mousemove 700 300 mousedown 1 mousemove 800 320 mousemove 900 340 mouseup 1
         key F12; shot 3

@@ -22,20 +22,101 @@ pub fn crate_dir() -> &'static Path {
 }
 
 /// Shell functions the scripts use: `start ARGS` starts gloss (its output
-/// in gloss.log) and focuses its window; `shot N` waits until the demo says
-/// it wrote gloss-screenshot-N.png; `key K` presses a key; `quit` ends it.
+/// in gloss.log, its panel's layout in layout.jsonl) and focuses its window;
+/// `shot N` waits until the demo says it wrote gloss-screenshot-N.png; `key
+/// K` presses a key; `quit` ends it.
+///
+/// Widgets are found by name, never by coordinates: the demo writes where
+/// every named widget is after each time egui lays the panel out
+/// (`GLOSS_DEMO_LAYOUT`, src/demo/layout.rs). `widget LABEL [IN]` prints the
+/// rectangle `x0 y0 x1 y1` (window pixels) of the input widget named LABEL
+/// (a choice's word IN the knob so labelled, or of that kind: `Slider`,
+/// `SpinButton`, `CheckBox` ...), or of the one label or area
+/// so named when no input is; more than one match, or none, is an error
+/// that lists the layout. `click_widget LABEL [IN]` scrolls the panel
+/// until the widget is inside its scrolling part and has stopped moving,
+/// then presses and releases the left button on its centre, and waits
+/// until the panel shows what the click did. `toggled LABEL
+/// [IN]` prints a checkbox's or choice's state (true / false).
 const PRELUDE: &str = r#"
 set -e
 wait_log() {
     for _ in $(seq 1200); do grep -q "$1" gloss.log 2>/dev/null && return 0; sleep 0.1; done
     echo "timed out waiting for '$1' in gloss.log" >&2; cat gloss.log >&2; return 1
 }
+layout_pass() { head -n 1 layout.jsonl 2>/dev/null | sed -n 's/^{"pass":\([0-9]*\),.*/\1/p'; }
+next_pass() {
+    for _ in $(seq 600); do
+        p=$(layout_pass); [ -n "$p" ] && [ "$p" -gt "$1" ] && return 0; sleep 0.1
+    done
+    echo "the demo wrote no layout after pass $1" >&2; return 1
+}
+json_str() { printf '%s' "$1" | sed 's/\\/\\\\/g; s/"/\\"/g'; }
+widget_line() {
+    local lines inputs n
+    lines=$(grep -F "{\"label\":\"$(json_str "$1")\"," layout.jsonl || true)
+    if [ -n "${2:-}" ]; then
+        lines=$(printf '%s\n' "$lines" \
+            | grep -F -e "\"in\":\"$(json_str "$2")\"" -e "\"kind\":\"$(json_str "$2")\"" || true)
+    fi
+    inputs=$(printf '%s\n' "$lines" | grep -F '"input":true' || true)
+    [ -n "$inputs" ] && lines=$inputs
+    n=$(printf '%s' "$lines" | grep -c . || true)
+    if [ "$n" != 1 ]; then
+        echo "widget '$1'${2:+ in '$2'}: $n matches in the panel's layout:" >&2
+        cut -c1-160 layout.jsonl >&2
+        return 1
+    fi
+    printf '%s\n' "$lines"
+}
+widget() {
+    local l; l=$(widget_line "$@") || return 1
+    printf '%s\n' "$l" | sed -n 's/.*"rect":\[\([-0-9]*\),\([-0-9]*\),\([-0-9]*\),\([-0-9]*\)\].*/\1 \2 \3 \4/p'
+}
+toggled() {
+    local l; l=$(widget_line "$@") || return 1
+    printf '%s\n' "$l" | sed -n 's/.*"toggled":\([a-z]*\).*/\1/p'
+}
+press_at() { xdotool mousemove "$1" "$2"; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1; }
+click_widget() {
+    local r last="" p x0 y0 x1 y1 cx cy sx0 sy0 sx1 sy1 wheel
+    for _ in $(seq 100); do
+        p=$(layout_pass)
+        r=$(widget "$@")
+        read -r x0 y0 x1 y1 <<< "$r"
+        cx=$(( (x0 + x1) / 2 )); cy=$(( (y0 + y1) / 2 ))
+        wheel=""
+        if grep -q '"label":"panel scroll"' layout.jsonl; then
+            read -r sx0 sy0 sx1 sy1 <<< "$(widget "panel scroll")"
+            if [ "$cy" -lt $((sy0 + 3)) ]; then wheel="click 4"
+            elif [ "$cy" -gt $((sy1 - 3)) ]; then wheel="click 5"
+            elif [ "$cx" -gt $((sx1 - 3)) ]; then wheel="keydown shift click 5 keyup shift"
+            elif [ "$cx" -lt $((sx0 + 3)) ]; then wheel="keydown shift click 4 keyup shift"
+            fi
+        fi
+        # Outside the scrolling part and not moved by the last turn of the
+        # wheel: a widget that does not scroll (the panel's top row).
+        if [ -n "$wheel" ] && [ "$r" != "$last" ]; then
+            xdotool mousemove $(( (sx0 + sx1) / 2 )) $(( (sy0 + sy1) / 2 )) $wheel
+        elif [ "$r" = "$last" ]; then
+            press_at "$cx" "$cy"
+            # The pass that takes the click, then one that shows its effect.
+            next_pass "$(layout_pass)"
+            next_pass "$(layout_pass)"
+            return 0
+        fi
+        last=$r
+        next_pass "$p"
+    done
+    echo "could not bring '$1' into the panel's view" >&2; return 1
+}
 start() {
-    "$GLOSS" --backend window --debug --frames 2000000 "$@" > gloss.log 2>&1 &
+    GLOSS_DEMO_LAYOUT="$PWD/layout.jsonl" "$GLOSS" --backend window --debug --frames 2000000 "$@" > gloss.log 2>&1 &
     pid=$!
     wid=$(xdotool search --sync --onlyvisible --name "gloss" | head -n 1)
     xdotool windowfocus --sync "$wid"
     wait_log "OpenGL"
+    next_pass 0
 }
 key() { xdotool key --clearmodifiers "$@"; }
 shot() { wait_log "gloss-screenshot-$1.png"; }

@@ -1,6 +1,6 @@
 //! The pixel probe in the window: a click in the 3D view probes the pixel
-//! under the pointer (the view starts right of the panel, 340 pixels wide
-//! at one pixel per point), and what the demo reads there equals what
+//! under the pointer (the view starts right of the panel, where the demo's
+//! layout says), and what the demo reads there equals what
 //! `gloss probe` reads at that pixel of a headless frame of the view's size
 //! (tests/demo/probe.rs checks `gloss probe` against the CPU's geometry).
 //! With GLOSS_BLESS=1 the test writes its window, the probe shown in the
@@ -86,9 +86,11 @@ fn assert_same(demo: &str, cli: &str) {
 fn a_click_in_the_view_probes_the_pixel_gloss_probe_reads() {
     let script = r#"
         start --window 1280x720 shadows-directional
-        xdotool mousemove --window "$wid" 800 500 click 1
+        read -r x0 y0 x1 y1 <<< "$(widget "3D view")"
+        echo "$x0" > view_x
+        xdotool mousemove --window "$wid" $((x0 + 460)) 500 click 1
         wait_log "gloss: probe end"
-        xdotool mousemove --window "$wid" 870 400 click 1
+        xdotool mousemove --window "$wid" $((x0 + 530)) 400 click 1
         for _ in $(seq 1200); do
             [ "$(grep -c 'gloss: probe end' gloss.log)" -ge 2 ] && break; sleep 0.1
         done
@@ -100,16 +102,26 @@ fn a_click_in_the_view_probes_the_pixel_gloss_probe_reads() {
     };
     let probes = printed(&log);
     assert_eq!(probes.len(), 2, "two clicks, two read-outs:\n{log}");
-    for (probe, (x, y)) in probes.iter().zip([(800, 500), (870, 400)]) {
-        // The pixel under the pointer: the view starts at the panel's edge.
+    // Where the 3D view starts (the panel's edge), from the demo's layout.
+    let x0: u32 = std::fs::read_to_string(dir.join("view_x"))
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap();
+    assert!(
+        (300..400).contains(&x0),
+        "the view beside a panel of about 340 px starts at {x0}"
+    );
+    for (probe, (x, y)) in probes.iter().zip([(460, 500), (530, 400)]) {
+        // The pixel under the pointer, counted in the view.
         let first = probe.lines().next().unwrap();
-        let want = format!("pixel ({}, {y}) of the ", x - 340);
+        let want = format!("pixel ({x}, {y}) of the ");
         assert!(first.starts_with(&want), "{first}: wanted {want}");
         let size = first.split(" of the ").nth(1).unwrap();
         let size = size.split(' ').next().unwrap();
         let out = Command::new(GLOSS)
             .args(["--debug", "probe", "shadows-directional"])
-            .args([(x - 340).to_string(), y.to_string()])
+            .args([x.to_string(), y.to_string()])
             .args(["--size", size])
             .current_dir(crate_dir())
             .output()

@@ -1,9 +1,9 @@
 //! The panel's switches of object outlines, instancing and the normals, clicked as a
 //! student clicks them (docs/stencil/object_outlines.md,
-//! docs/vertex_geometry/instancing.md). The checkboxes' places are the
-//! panel's layout for these scenes in a 1280 x 1000 window: the object
-//! outlines checkbox under the forward pass's knobs, and again, once
-//! switched off, below the list of techniques not in the frame.
+//! docs/vertex_geometry/instancing.md). Each checkbox is found by its label
+//! in the panel's layout (`click_widget`, tests/window_demo/main.rs): under
+//! the forward pass's knobs while its technique runs, and, once switched
+//! off, below the list of techniques not in the frame.
 
 use crate::{differing, drive, shot};
 
@@ -14,16 +14,28 @@ fn outline_pixels(img: &image::RgbaImage) -> usize {
         .count()
 }
 
+/// The lines of `name` in a driven demo's directory.
+fn lines(dir: &std::path::Path, name: &str) -> Vec<String> {
+    std::fs::read_to_string(dir.join(name))
+        .unwrap_or_default()
+        .lines()
+        .map(str::to_string)
+        .collect()
+}
+
 #[test]
 fn the_outlines_checkbox_switches_outlines_off_and_on() {
     let script = r#"
         start --window 1280x1000 outlines
         sleep 2
+        toggled "object outlines" >> states
         key F12; shot 1
-        xdotool mousemove 128 756; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        click_widget "object outlines"
+        toggled "object outlines" >> states
         sleep 1
         key F12; shot 2
-        xdotool mousemove 128 831; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        click_widget "object outlines"
+        toggled "object outlines" >> states
         sleep 1
         key F12; shot 3
         quit
@@ -31,6 +43,11 @@ fn the_outlines_checkbox_switches_outlines_off_and_on() {
     let Some((dir, log)) = drive("gloss-window-outlines", "1280x1024x24", script) else {
         return;
     };
+    assert_eq!(
+        lines(&dir, "states"),
+        ["true", "false", "true"],
+        "the checkbox's state in the panel: on, off, on"
+    );
     let (on, off, again) = (
         shot(&dir, &log, 1),
         shot(&dir, &log, 2),
@@ -63,8 +80,9 @@ fn the_instancing_checkbox_switches_to_one_draw_per_rock_and_the_same_image() {
         start --window 1280x1000 rocks.toml
         sleep 2
         key F12; shot 1
+        widget "instanced draw" > box
         key shift+F12; shot 2
-        xdotool mousemove 130 757; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        click_widget "instanced draw"
         sleep 1
         key F12; shot 3
         key shift+F12; shot 4
@@ -76,17 +94,21 @@ fn the_instancing_checkbox_switches_to_one_draw_per_rock_and_the_same_image() {
         return;
     };
     let (instanced, per_rock) = (shot(&dir, &log, 1), shot(&dir, &log, 3));
-    // The checkbox (its 16 x 16 box at the click) lost its tick.
+    // The checkbox (its box, where the layout said it was) lost its tick.
+    let r: Vec<u32> = lines(&dir, "box")[0]
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
     let (before, after) = (shot(&dir, &log, 2), shot(&dir, &log, 4));
     let ticked = |img: &image::RgbaImage| {
-        (749..765)
-            .flat_map(|y| (122..138).map(move |x| (x, y)))
+        (r[1]..r[3])
+            .flat_map(|y| (r[0]..r[2]).map(move |x| (x, y)))
             .filter(|&(x, y)| img.get_pixel(x, y)[0] > 180)
             .count()
     };
     assert!(
         ticked(&before) > 5 && ticked(&after) < ticked(&before) / 3,
-        "the instanced draw checkbox did not switch off: {} light pixels in its box before, {} after",
+        "the instanced draw checkbox did not switch off: {} light pixels in its box {r:?} before, {} after",
         ticked(&before),
         ticked(&after)
     );
@@ -105,10 +127,10 @@ fn the_show_normals_checkbox_switches_the_lines_off_and_on() {
         start --window 1280x1000 normals
         sleep 2
         key F12; shot 1
-        xdotool mousemove 121 756; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        click_widget "show normals"
         sleep 1
         key F12; shot 2
-        xdotool mousemove 121 831; sleep 0.3; xdotool mousedown 1; sleep 0.2; xdotool mouseup 1
+        click_widget "show normals"
         sleep 1
         key F12; shot 3
         quit

@@ -11,14 +11,16 @@ pub(super) fn vec3(
     range: std::ops::RangeInclusive<f32>,
 ) -> bool {
     ui.horizontal(|ui| {
-        ui.label(label);
-        let mut changed = false;
-        for c in [&mut v.x, &mut v.y, &mut v.z] {
-            changed |= ui
-                .add(egui::DragValue::new(c).range(range.clone()).speed(0.01))
-                .changed();
-        }
-        changed
+        let label = ui.label(label);
+        ui.label_inputs_by(label.id, |ui| {
+            let mut changed = false;
+            for c in [&mut v.x, &mut v.y, &mut v.z] {
+                changed |= ui
+                    .add(egui::DragValue::new(c).range(range.clone()).speed(0.01))
+                    .changed();
+            }
+            changed
+        })
     })
     .inner
 }
@@ -31,8 +33,9 @@ pub(super) fn number(
     range: std::ops::RangeInclusive<f32>,
 ) -> bool {
     ui.horizontal(|ui| {
-        ui.label(label);
+        let label = ui.label(label);
         ui.add(egui::DragValue::new(v).range(range).speed(0.01))
+            .labelled_by(label.id)
             .changed()
     })
     .inner

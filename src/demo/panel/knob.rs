@@ -9,9 +9,12 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
     let before = (k.get)(settings);
     let mut after = before;
     ui.horizontal(|ui| {
-        ui.label(k.label)
+        let label = ui
+            .label(k.label)
             .on_hover_text(format!("{}\n{}", k.key, k.help));
-        match (k.kind, &mut after) {
+        // The controls are named by the label (egui's accessibility tree,
+        // which the window tests read: src/demo/layout.rs).
+        ui.label_inputs_by(label.id, |ui| match (k.kind, &mut after) {
             (Kind::Bool, Value::Bool(b)) => {
                 ui.checkbox(b, "");
             }
@@ -23,7 +26,10 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
             }
             (Kind::Choice(words), Value::Choice(i)) => {
                 for (j, w) in words.iter().enumerate() {
-                    ui.selectable_value(i, j, *w);
+                    let r = ui.selectable_value(i, j, *w);
+                    // Each choice is named by its word, described by the knob.
+                    ui.ctx()
+                        .accesskit_node_builder(r.id, |n| n.set_description(k.label));
                 }
             }
             (Kind::Color, Value::Color(c)) => {
@@ -42,7 +48,7 @@ pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool 
             _ => {
                 ui.label("?");
             }
-        }
+        });
     });
     if after != before {
         (k.set)(settings, after);

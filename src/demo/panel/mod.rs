@@ -144,6 +144,10 @@ pub struct PanelState {
     pub drawn: egui::Rect,
     /// Probe the pixel under the pointer every frame, not only on a click.
     pub probe_follow: bool,
+    /// The panel's rectangle and the part of it that scrolls (points), at
+    /// its last drawing; None while hidden.
+    pub rect: Option<egui::Rect>,
+    pub scroll: Option<egui::Rect>,
     /// The probe's magnifier, kept until the panel is drawn again.
     magnifier: Option<egui::TextureHandle>,
     path_text: String,
@@ -171,6 +175,8 @@ impl PanelState {
                 egui::pos2(f32::INFINITY, f32::INFINITY),
             )),
             probe_follow: false,
+            rect: None,
+            scroll: None,
             magnifier: None,
             path_text: scene_path.to_string(),
             save_text: "edited.toml".into(),
@@ -182,6 +188,7 @@ impl PanelState {
     pub fn show(&mut self, ui: &mut egui::Ui, input: &PanelInput) -> Vec<Action> {
         let mut actions = Vec::new();
         self.drawn = egui::Rect::NOTHING;
+        (self.rect, self.scroll) = (None, None);
         if self.help
             && let Some(r) = help_window(ui, &mut self.help)
         {
@@ -200,7 +207,7 @@ impl PanelState {
                 self.top(ui, input);
                 // Wide content (the plan, long names) scrolls sideways
                 // rather than widening the panel.
-                egui::ScrollArea::both().show(ui, |ui| {
+                let scroll = egui::ScrollArea::both().show(ui, |ui| {
                     self.probe_section(ui, input);
                     self.scene_section(ui, input, &mut actions);
                     self.animation_section(ui, input, &mut actions);
@@ -219,8 +226,10 @@ impl PanelState {
                         .default_open(false)
                         .show(ui, keys_grid);
                 });
+                self.scroll = Some(scroll.inner_rect);
             });
         self.drawn = self.drawn.union(panel.response.rect);
+        self.rect = Some(panel.response.rect);
         // Kept while the panel is hidden: Tab brings it back at this width.
         self.view = Some(ui.available_rect_before_wrap());
         actions

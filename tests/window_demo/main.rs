@@ -11,6 +11,7 @@ mod input;
 mod layout;
 mod probe;
 mod switches;
+mod techniques;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

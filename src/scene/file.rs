@@ -102,7 +102,6 @@ fn default_near() -> f32 {
 fn default_far() -> f32 {
     100.0
 }
-
 #[derive(Deserialize, Debug)]
 #[serde(deny_unknown_fields, default)]
 pub(super) struct RenderFile {
@@ -135,9 +134,7 @@ pub(super) struct RenderFile {
     pub(super) sort_opaque: bool,
     /// Lighting shaders specialised to what the scene holds (src/frame/variant.rs).
     pub(super) specialize: bool,
-    /// Tiled shading and the far field read the lights from the uniform
-    /// block, not the buffer texture, when they fit (src/frame/variant.rs).
-    /// Off by default: on llvmpipe the two measured the same.
+    /// Lights from the uniform block when they fit (src/frame/variant.rs; off: llvmpipe measured no gain).
     pub(super) light_block: bool,
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
@@ -149,11 +146,9 @@ pub(super) struct RenderFile {
     pub(super) outline_width: u32,
     /// Draw the `[instancing]` field with one instanced draw (false: one draw per rock).
     pub(super) instancing: bool,
-    /// Draw every opaque object's vertex normals as lines (a geometry shader).
+    /// Geometry shaders: vertex normals drawn as lines; exploding objects.
     pub(super) show_normals: bool,
     pub(super) normal_length: f32,
-    /// Draw the opaque objects exploded: each triangle moved along its face
-    /// normal by a geometry shader (vertex_geometry/exploding_objects.rs).
     pub(super) explode: bool,
     pub(super) explode_magnitude: f32,
     pub(super) skinning_on: super::settings::SkinningOn,

@@ -2,6 +2,12 @@
 // Notes 01 §8.6.2 step 3, "Generate final image": a screen-sized triangle
 // that adds the ambient term to the accumulated light and encodes to sRGB.
 #include "common/gbuffer_read.glsl"
+// The cascade colours (shadow.cascade_colors) on the deferred paths: the
+// composite tints each pixel by the cascade of its G-buffer point, as the
+// forward pass tints by the point it lights.
+#ifdef CASCADE_TINTS
+#include "shadows/cascade_block.glsl"
+#endif
 #include "common/lighting_output.glsl"
 #include "common/image_based_lighting.glsl"
 uniform vec3 u_eye;
@@ -39,6 +45,9 @@ void main() {
     if (u_has_ambient_occlusion) {
         ambient *= texture(u_ambient_occlusion, uv).r;
     }
+#ifdef CASCADE_TINTS
+    g_cascade_tint = cascade_tint_at(read_geometry_texel(ivec2(gl_FragCoord.xy)).P);
+#endif
     vec3 emitted = read_emission(uv);
     frag_color = output_color(ambient + emitted + (u_has_light ? texture(u_light, uv).rgb : vec3(0.0)));
 }

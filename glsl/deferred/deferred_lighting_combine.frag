@@ -4,6 +4,10 @@
 // with the material, at full precision:  kd (ambient + D) + ks S.
 #include "common/material.glsl"
 #include "common/alpha_test.glsl"
+// The cascade colours (shadow.cascade_colors), by the point drawn.
+#ifdef CASCADE_TINTS
+#include "shadows/cascade_block.glsl"
+#endif
 #include "common/lighting_output.glsl"
 #include "common/normals.glsl"
 #include "common/environment.glsl"
@@ -50,5 +54,8 @@ void main() {
         mirrored += ao * material_occlusion(uv)
             * ibl_ambient(u_ambient, N, normalize(u_eye - v_position), kd, ks, material_reflectance());
     }
+#ifdef CASCADE_TINTS
+    g_cascade_tint = cascade_tint_at(v_position);
+#endif
     frag_color = output_color(kd * (ambient + D) + ks * S + mirrored + material_emission(uv));
 }

@@ -15,16 +15,7 @@
 #define SHADOW_CASCADED 3
 
 #if VARIANT_CASCADES
-#define MAX_CASCADES 8
-
-// std140, src/frame/shadows/cascades.rs writes this layout.
-layout(std140) uniform Cascades {
-    mat4 u_cascade_matrix[MAX_CASCADES];  // bias * projection * view of each cascade
-    vec4 u_cascade_range[MAX_CASCADES];   // near, far (view depth), texel (world), 0
-    vec4 u_cascade_eye;                   // the camera's eye, w: the cascade count
-    vec4 u_cascade_forward;               // its unit forward axis, w: the blend band
-    vec4 u_cascade_flags;                 // x: tint each cascade (debugging)
-};
+#include "shadows/cascade_block.glsl"
 
 uniform sampler2DArrayShadow u_shadow_cascades;   // UNIT_CASCADES
 
@@ -53,48 +44,20 @@ float cascade_visibility(int k, vec3 P, vec3 N, vec3 L, vec4 b) {
     return pcf_cascade(vec4(c.xy, float(k), c.z), int(b.z), 1.0 / b.w);
 }
 
-// The cascade colours (shadow.cascade_colors): the last lookup's cascade
-// tint, which output_color (common/lighting_output.glsl) multiplies into
-// the pixel when the shader includes this file before that one (the forward
-// and transparent passes; the deferred paths add light in passes of their
-// own, and their composite shows no tint).
-#define CASCADE_TINT 1
-vec3 g_cascade_tint = vec3(1.0);
-
-// The tint of cascade k when u_cascade_flags.x is set (else white).
-vec3 cascade_tint(int k) {
-    const vec3 TINTS[MAX_CASCADES] = vec3[](
-        vec3(1.0, 0.45, 0.45), vec3(0.45, 1.0, 0.45), vec3(0.5, 0.6, 1.0), vec3(1.0, 1.0, 0.4),
-        vec3(1.0, 0.5, 1.0), vec3(0.4, 1.0, 1.0), vec3(1.0, 0.7, 0.35), vec3(0.75, 0.75, 0.75));
-    return u_cascade_flags.x > 0.5 ? TINTS[k] : vec3(1.0);
-}
-
-// The cascade whose slice holds view depth z (the last past the far split).
-int cascade_of(float z) {
-    int count = int(u_cascade_eye.w);
-    int k = 0;
-    while (k < count - 1 && z > u_cascade_range[k].y) ++k;
-    return k;
-}
-
 // How much of the directional light (towards L) reaches P, normal N.
 float cascaded_shadow(vec3 P, vec3 N, vec3 L, vec4 b) {
     int count = int(u_cascade_eye.w);
     if (count < 1) return 1.0;
-    float z = dot(P - u_cascade_eye.xyz, u_cascade_forward.xyz);
+    float z = cascade_depth(P);
     int k = cascade_of(z);
     float lit = cascade_visibility(k, P, N, L, b);
     // The blend band: the last `blend` of cascade k's range fades into k + 1,
     // reaching it exactly at the split.
-    float band = u_cascade_forward.w * (u_cascade_range[k].y - u_cascade_range[k].x);
-    float to_split = u_cascade_range[k].y - z;
-    if (k + 1 < count && band > 0.0 && to_split < band) {
-        float t = clamp(to_split / band, 0.0, 1.0);
+    float t = cascade_band(k, z);
+    if (t < 1.0) {
         lit = mix(cascade_visibility(k + 1, P, N, L, b), lit, t);
-        g_cascade_tint = mix(cascade_tint(k + 1), cascade_tint(k), t);
-    } else {
-        g_cascade_tint = cascade_tint(k);
     }
+    g_cascade_tint = cascade_tint_at(P);
     return lit;
 }
 #endif

@@ -33,7 +33,7 @@ mod block;
 mod cascades;
 mod sampler;
 use block::block_size;
-pub use cascades::{CASCADES_BINDING, UNIT_CASCADES};
+pub use cascades::{CASCADES_BINDING, UNIT_CASCADES, cascade_tints};
 pub use sampler::setup_program;
 
 /// The uniform-block binding point of the `Shadows` block.
@@ -336,6 +336,12 @@ impl ShadowMaps {
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, SHADOWS_BINDING, Some(self.ubo.id));
         }
+    }
+
+    /// The `Cascades` block alone (`on`), or unbound: the deferred paths'
+    /// last passes read it for the cascade colours (`cascade_tints`).
+    pub fn bind_cascade_block(&self, gl: &glow::Context, on: bool) {
+        self.cascades.bind_block(gl, on);
     }
 
     /// Undo `bind`.

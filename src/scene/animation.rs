@@ -281,6 +281,8 @@ impl Scene {
             (a, b) => a.or(b),
         };
         keys.or_else(|| self.particles.as_ref().map(|p| (0.0, 4.0 * p.lifetime)))
+            // Exploding objects swing with sin(t): one period.
+            .or_else(|| self.render.explode.then_some((0.0, std::f32::consts::TAU)))
     }
 
     /// Show the instant `time` (seconds): each animated object's local

@@ -130,9 +130,7 @@ pub(super) struct RenderFile {
     pub(super) sort_opaque: bool,
     /// Lighting shaders specialised to what the scene holds (src/frame/variant.rs).
     pub(super) specialize: bool,
-    /// Tiled shading and the far field read the lights from the uniform
-    /// block, not the buffer texture, when they fit (src/frame/variant.rs).
-    /// Off by default: on llvmpipe the two measured the same.
+    /// Lights from the uniform block when they fit (src/frame/variant.rs; off: llvmpipe measured no gain).
     pub(super) light_block: bool,
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
@@ -144,9 +142,11 @@ pub(super) struct RenderFile {
     pub(super) outline_width: u32,
     /// Draw the `[instancing]` field with one instanced draw (false: one draw per rock).
     pub(super) instancing: bool,
-    /// Draw every opaque object's vertex normals as lines (a geometry shader).
+    /// Geometry shaders: vertex normals drawn as lines; exploding objects.
     pub(super) show_normals: bool,
     pub(super) normal_length: f32,
+    pub(super) explode: bool,
+    pub(super) explode_magnitude: f32,
     pub(super) skinning_on: super::settings::SkinningOn,
     pub(super) joint_storage: super::settings::JointStorage,
     pub(super) texture_filter: super::texturing::FilterOverride,
@@ -207,6 +207,8 @@ impl Default for RenderFile {
             instancing: true,
             show_normals: false,
             normal_length: 0.2,
+            explode: false,
+            explode_magnitude: 0.5,
             skinning_on: super::settings::SkinningOn::Gpu,
             joint_storage: super::settings::JointStorage::Auto,
             texture_filter: super::texturing::FilterOverride::Material,

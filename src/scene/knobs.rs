@@ -20,7 +20,7 @@ mod stencil;
 mod texturing;
 pub use animation::{JOINT_STORAGE, SKINNING_ON};
 pub use blending::{PEEL_LAYERS_KNOB as PEEL_LAYERS, TRANSPARENCY};
-pub use instancing::{INSTANCING, NORMAL_LENGTH, SHOW_NORMALS};
+pub use instancing::{EXPLODE, EXPLODE_MAGNITUDE, INSTANCING, NORMAL_LENGTH, SHOW_NORMALS};
 pub use lighting::{
     ACCUMULATION, AREA_LIGHTS, CUTOFF, DEFERRED_LIGHTS, DEPTH_SLICES, FALLOFF, FAR_FIELD,
     FAR_FIELD_SH, GBUFFER_ENCODING, NEAR_RADIUS, STENCIL_VOLUMES, TILE_SIZE,
@@ -328,6 +328,8 @@ pub static ALL: &[&Knob] = &[
     &INSTANCING,
     &SHOW_NORMALS,
     &NORMAL_LENGTH,
+    &EXPLODE,
+    &EXPLODE_MAGNITUDE,
     &TEXTURE_FILTER,
     &INTERPOLATION,
     &MIP_COLORS,
@@ -359,6 +361,7 @@ pub static SWITCHES: &[(&Knob, AppliesTo)] = &[
     (&OUTLINES, |s| s.outlines.is_some()),
     (&SHOW_NORMALS, |s| s.opaque_objects() > 0),
     (&AREA_LIGHTS, |s| !s.area_lights.is_empty()),
+    (&EXPLODE, |s| s.opaque_objects() > 0),
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

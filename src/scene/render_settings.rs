@@ -164,6 +164,16 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             }
             r.normal_length
         },
+        explode: r.explode,
+        explode_magnitude: {
+            let m = r.explode_magnitude;
+            if !(m.is_finite() && (0.0..=100.0).contains(&m)) {
+                bail!(
+                    "render.explode_magnitude: expected a distance in world units, >= 0 and <= 100, found {m}"
+                );
+            }
+            m
+        },
         outline_width: {
             let widths = super::outlines::OUTLINE_WIDTHS;
             if !widths.contains(&r.outline_width) {
@@ -295,6 +305,12 @@ pub struct RenderSettings {
     /// lines a geometry shader makes (src/techniques/vertex_geometry/visualizing_normals.rs).
     pub show_normals: bool,
     pub normal_length: f32,
+    /// Draw the opaque objects exploded (forward path, Phong shading): a
+    /// geometry shader moves each triangle along its face normal by
+    /// `explode_magnitude` x (sin(t) + 1) / 2 at the scene's time t
+    /// (src/techniques/vertex_geometry/exploding_objects.rs).
+    pub explode: bool,
+    pub explode_magnitude: f32,
     /// Where skinned meshes are skinned: the GPU pass, or the CPU reference.
     pub skinning_on: SkinningOn,
     /// Where the skinning pass reads the joint matrices from.
@@ -331,4 +347,13 @@ pub struct RenderSettings {
     pub ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusion>,
     /// How the G-buffer holds the microfacet triple (notes 03, Geometry Pass).
     pub gbuffer_encoding: super::settings::GBufferEncoding,
+}
+
+impl RenderSettings {
+    /// Whether the exploding-objects pass draws the opaque world (the
+    /// forward pass then skips it): `explode` on the forward path with
+    /// Phong shading (src/techniques/vertex_geometry/exploding_objects.rs).
+    pub fn explodes(&self) -> bool {
+        self.explode && self.path == RenderPath::Forward && self.shading == Shading::Phong
+    }
 }

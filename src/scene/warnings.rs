@@ -347,6 +347,13 @@ impl Scene {
                 w.push(format!("{key} has no effect: no material has a height_map"));
             }
         }
+        // Exploding objects (vertex_geometry/exploding_objects.rs) run on one path.
+        if r.explode && !r.explodes() {
+            w.push(format!(
+                "render.explode has no effect: exploding objects are drawn on the forward path with Phong shading; here ({} path, {} shading) the objects are drawn whole",
+                r.path, r.shading
+            ));
+        }
     }
 
     /// A material with a height map that parallax mapping will not draw.

@@ -39,6 +39,9 @@ pub static ALL: &[&Technique] = &[
     // The skybox before the opaque world (render.sky_first, for comparison).
     &sky::sky_first::SKY_FIRST,
     &lighting::forward::FORWARD,
+    // Into forward's target, the opaque world exploded that forward skips
+    // (render.explode).
+    &vertex_geometry::exploding_objects::EXPLODING_OBJECTS,
     // Into forward's target, the objects with a height map that forward skips.
     &lighting::parallax_mapping::PARALLAX_MAPPING,
     // The area lights' rectangles, over the world forward shaded with them.

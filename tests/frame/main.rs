@@ -8,6 +8,7 @@ mod common;
 mod animation;
 mod clip_planes;
 mod culling;
+mod exploding_objects;
 mod face_culling;
 mod feedback;
 mod instancing;

@@ -13,6 +13,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod cascade_colors;
 mod cascaded_shadow_maps;
 mod culling;
 mod face_passes;

@@ -14,6 +14,7 @@ mod pictures;
 mod probe;
 mod student;
 mod switches;
+mod techniques;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -84,6 +84,17 @@ pub(super) fn read_by(scene: &crate::scene::Scene) -> bool {
     !scene.render.specialize || scene.lights.iter().any(cascaded)
 }
 
+/// Whether `scene` shows the cascade colours (`shadow.cascade_colors` on a
+/// directional light with cascades): the deferred paths' last passes
+/// (composite, the light pre-pass's combine) then tint by the cascade of
+/// each pixel's point, as the forward pass tints by the point it lights.
+pub fn cascade_tints(scene: &crate::scene::Scene) -> bool {
+    scene.lights.iter().any(|l| {
+        l.kind == crate::scene::LightKind::Directional
+            && l.shadow.is_some_and(|s| s.cascades > 1 && s.cascade_colors)
+    })
+}
+
 /// The `Cascades` block and a 1 x 1 x 1 array for the unit when no light
 /// cascades (a program that reads the sampler wants a complete texture).
 /// Bound only when `needed` (`read_by`): other frames' lighting passes
@@ -155,6 +166,13 @@ impl CascadeBlock {
             }
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, CASCADES_BINDING, Some(self.ubo.id));
         }
+    }
+
+    /// The block alone, for a pass that reads the cascades' ranges and no
+    /// map (the deferred paths' cascade colours).
+    pub(super) fn bind_block(&self, gl: &glow::Context, on: bool) {
+        let id = on.then_some(self.ubo.id);
+        unsafe { gl.bind_buffer_base(glow::UNIFORM_BUFFER, CASCADES_BINDING, id) };
     }
 
     pub(super) fn unbind(&self, gl: &glow::Context) {

@@ -1,5 +1,6 @@
-//! The knobs of instancing and of the geometry shader's normals (LearnOpenGL,
-//! 4.advanced_opengl "Instancing", "Geometry Shader").
+//! The knobs of instancing and of the geometry shader's normals and
+//! exploding objects (LearnOpenGL, 4.advanced_opengl "Instancing",
+//! "Geometry Shader").
 
 use super::{Kind, Knob, Value};
 
@@ -42,6 +43,36 @@ pub static NORMAL_LENGTH: Knob = Knob {
     set: |r, v| {
         if let Value::Number(x) = v {
             r.normal_length = x;
+        }
+    },
+};
+
+pub static EXPLODE: Knob = Knob {
+    key: "render.explode",
+    label: "explode",
+    help: "draw the opaque objects exploded: a geometry shader moves each triangle along its face normal by magnitude x (sin(t) + 1) / 2, t the scene's time (LearnOpenGL, Geometry Shader; forward path, Phong shading)",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.explode),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.explode = b;
+        }
+    },
+};
+
+pub static EXPLODE_MAGNITUDE: Knob = Knob {
+    key: "render.explode_magnitude",
+    label: "explode magnitude",
+    help: "how far the exploded triangles move at most, in world units",
+    kind: Kind::Number {
+        min: 0.0,
+        max: 4.0,
+        log: false,
+    },
+    get: |r| Value::Number(r.explode_magnitude),
+    set: |r, v| {
+        if let Value::Number(x) = v {
+            r.explode_magnitude = x;
         }
     },
 };

@@ -24,6 +24,7 @@ use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
+use crate::frame::shadows;
 use crate::frame::targets::{LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
@@ -94,6 +95,9 @@ struct Composite {
     /// composite tests depth). A shader that writes gl_FragDepth costs more
     /// per pixel even when its depth goes nowhere, so this is its own program.
     colour_only: Program,
+    /// The same two, tinting each pixel by its cascade (shadow.cascade_colors).
+    with_depth_tinted: Program,
+    colour_only_tinted: Program,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -101,9 +105,18 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (glow::FRAGMENT_SHADER, "deferred/composite.frag"),
     ];
+    let depth = ("WRITE_DEPTH", "1".to_string());
+    let tints = ("CASCADE_TINTS", "1".to_string());
+    let with_depth_tinted = p.build_with(&stages, &[depth.clone(), tints.clone()])?;
+    let colour_only_tinted = p.build_with(&stages, &[tints])?;
+    for program in [&with_depth_tinted, &colour_only_tinted] {
+        program.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);
+    }
     Ok(Box::new(Composite {
-        with_depth: p.build_with(&stages, &[("WRITE_DEPTH", "1".into())])?,
+        with_depth: p.build_with(&stages, &[depth])?,
         colour_only: p.build(&stages)?,
+        with_depth_tinted,
+        colour_only_tinted,
     }))
 }
 
@@ -111,10 +124,12 @@ impl RunPasses for Composite {
     fn run(&self, _: &Pass, f: &Frame) {
         let output = f.targets.get(world_target(f.scene));
         let depth = output.depth_stencil.is_some() || output.shared_depth.is_some();
-        let p = if depth {
-            &self.with_depth
-        } else {
-            &self.colour_only
+        let tints = shadows::cascade_tints(f.scene);
+        let p = match (depth, tints) {
+            (true, false) => &self.with_depth,
+            (false, false) => &self.colour_only,
+            (true, true) => &self.with_depth_tinted,
+            (false, true) => &self.colour_only_tinted,
         };
         let (gl, u) = (f.gl, f.uniforms);
         // A frame with no lights has no lighting pass and no light to add.
@@ -155,8 +170,14 @@ impl RunPasses for Composite {
             image_based_lighting::bind(gl, p, ibl);
             p.set_vec3("u_background", f.scene.render.background);
             p.set_bool("u_output_srgb", u.output_srgb);
+            if tints {
+                f.shadows.bind_cascade_block(gl, true);
+            }
             f.meshes.fullscreen.draw();
 
+            if tints {
+                f.shadows.bind_cascade_block(gl, false);
+            }
             super::ambient_light::unbind_result(gl);
             image_based_lighting::unbind(gl, ibl);
             gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);

@@ -113,6 +113,8 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
 struct DeferredLighting {
     light: Program,
     combine: Program,
+    /// The same, tinting by the cascade (shadow.cascade_colors).
+    combine_tinted: Program,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -123,14 +125,21 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     ])?;
     light.bind_uniform_block("Lights", LIGHTS_BINDING);
     shadows::setup_program(&light);
-    let combine = p.build(&[
+    let stages = [
         (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
         (
             glow::FRAGMENT_SHADER,
             "deferred/deferred_lighting_combine.frag",
         ),
-    ])?;
-    Ok(Box::new(DeferredLighting { light, combine }))
+    ];
+    let combine = p.build(&stages)?;
+    let combine_tinted = p.build_with(&stages, &[("CASCADE_TINTS", "1".into())])?;
+    combine_tinted.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);
+    Ok(Box::new(DeferredLighting {
+        light,
+        combine,
+        combine_tinted,
+    }))
 }
 
 impl RunPasses for DeferredLighting {
@@ -152,7 +161,13 @@ impl DeferredLighting {
 
     /// Step 3: draw the scene again, combining light and material.
     fn combine(&self, f: &Frame) {
-        let (gl, p, u) = (f.gl, &self.combine, f.uniforms);
+        let tints = shadows::cascade_tints(f.scene);
+        let p = if tints {
+            &self.combine_tinted
+        } else {
+            &self.combine
+        };
+        let (gl, u) = (f.gl, f.uniforms);
         let gbuf = f.targets.get(gbuffer::NAME);
         let output = f.targets.get(world_target(f.scene));
         // A frame with no lights has no light pre-pass and no light to add.
@@ -213,6 +228,10 @@ impl DeferredLighting {
             gl.cull_face(glow::BACK);
 
             p.use_program();
+            // The cascade colours: the cascades' ranges (shadow.cascade_colors).
+            if tints {
+                f.shadows.bind_cascade_block(gl, true);
+            }
             p.set_mat4("u_view_projection", &u.view_projection);
             p.set_vec3("u_ambient", f.scene.render.ambient);
             super::ambient_light::bind_result(f, p);
@@ -280,6 +299,9 @@ impl DeferredLighting {
                 gl.bind_texture(glow::TEXTURE_2D, None);
             }
             gl.active_texture(glow::TEXTURE0);
+            if tints {
+                f.shadows.bind_cascade_block(gl, false);
+            }
             gl.use_program(None);
             gl.cull_face(glow::BACK);
             gl.disable(glow::CULL_FACE);

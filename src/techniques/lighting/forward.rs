@@ -224,6 +224,11 @@ impl RunPasses for Forward {
                 if d.height_map.is_some() && super::parallax_mapping::draws_relief(f.scene) {
                     continue;
                 }
+                // render.explode: the exploding-objects pass draws them
+                // (vertex_geometry/exploding_objects.rs).
+                if settings.explodes() {
+                    continue;
+                }
                 // The material's face culling (notes 01 §3.4): back faces
                 // (the default), front faces, both, or none.
                 match d.cull.gl() {

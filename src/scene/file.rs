@@ -135,9 +135,7 @@ pub(super) struct RenderFile {
     pub(super) sort_opaque: bool,
     /// Lighting shaders specialised to what the scene holds (src/frame/variant.rs).
     pub(super) specialize: bool,
-    /// Tiled shading and the far field read the lights from the uniform
-    /// block, not the buffer texture, when they fit (src/frame/variant.rs).
-    /// Off by default: on llvmpipe the two measured the same.
+    /// The lights from the uniform block, not the buffer texture (src/frame/variant.rs).
     pub(super) light_block: bool,
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
@@ -149,7 +147,6 @@ pub(super) struct RenderFile {
     pub(super) outline_width: u32,
     /// Draw the `[instancing]` field with one instanced draw (false: one draw per rock).
     pub(super) instancing: bool,
-    /// Draw every opaque object's vertex normals as lines (a geometry shader).
     pub(super) show_normals: bool,
     pub(super) normal_length: f32,
     pub(super) skinning_on: super::settings::SkinningOn,
@@ -169,6 +166,8 @@ pub(super) struct RenderFile {
     /// Image-based lighting as the ambient term (src/frame/image_based_lighting.rs).
     pub(super) ibl: bool,
     pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
+    pub(super) gbuffer: super::settings::GBufferNormals,
+    pub(super) hardware_srgb: bool,
 }
 
 impl Default for RenderFile {
@@ -223,6 +222,8 @@ impl Default for RenderFile {
             sky_first: false,
             ibl: false,
             gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
+            gbuffer: super::settings::GBufferNormals::Rgba16f,
+            hardware_srgb: true,
         }
     }
 }

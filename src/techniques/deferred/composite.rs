@@ -10,6 +10,13 @@
 //! into a mirror (stencil/mirror.rs) it writes only inside the mirror's
 //! stencil region, and only where nothing nearer is there already.
 //!
+//! Where the output allows (an 8-bit output with no post chain,
+//! `render.hardware_srgb`: src/frame/plan.rs `hardware_srgb`), the output
+//! is SRGB8_ALPHA8 and GL_FRAMEBUFFER_SRGB is on while the composite draws:
+//! the shader writes linear light and GL encodes it, instead of pow() per
+//! pixel. Elsewhere (a post chain's linear HDR target, the RGBA32F output of
+//! error measurements, `render.hardware_srgb = false`) the shader encodes.
+//!
 //! GL state: with a depth buffer in the output, depth test GL_ALWAYS (one
 //! triangle covers every pixel exactly once, notes 02), or GL_LEQUAL and the
 //! stencil test for a reflected view; without one (nothing after the
@@ -17,7 +24,8 @@
 //! shader that writes colour only;
 //! textures on the G-buffer units and unit::LIGHT, unbound after (and, with
 //! render.ibl, image-based lighting's maps with GL_TEXTURE_CUBE_MAP_SEAMLESS
-//! on); restores no depth or stencil test, GL_LESS, no seamless filtering.
+//! on); GL_FRAMEBUFFER_SRGB on an SRGB8_ALPHA8 output; restores no depth or
+//! stencil test, GL_LESS, no seamless filtering, no GL_FRAMEBUFFER_SRGB.
 
 use crate::frame::gbuffer;
 use crate::frame::image_based_lighting;
@@ -41,7 +49,7 @@ pub const COMPOSITE: Technique = Technique {
     shaders: &["common/fullscreen.vert", "deferred/composite.frag"],
     scene: "scenes/deferred-shading.toml",
     docs: "docs/deferred/composite.md",
-    knobs: &[&knobs::AMBIENT, &knobs::BACKGROUND],
+    knobs: &[&knobs::AMBIENT, &knobs::BACKGROUND, &knobs::HARDWARE_SRGB],
     passes,
     targets,
     create,
@@ -67,7 +75,9 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                         Some(_) => "ambient x albedo x AO + light",
                         None => "ambient x albedo + light",
                     },
-                    if scene.post.is_empty() {
+                    if crate::frame::plan::hardware_srgb(scene) {
+                        "sRGB encode by GL_FRAMEBUFFER_SRGB"
+                    } else if scene.post.is_empty() {
                         "sRGB encode"
                     } else {
                         "linear: a post chain follows"
@@ -94,6 +104,8 @@ struct Composite {
     /// composite tests depth). A shader that writes gl_FragDepth costs more
     /// per pixel even when its depth goes nowhere, so this is its own program.
     colour_only: Program,
+    /// The two, writing linear light for GL to encode (HARDWARE_SRGB).
+    hardware: [Program; 2],
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -101,9 +113,14 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (glow::FRAGMENT_SHADER, "deferred/composite.frag"),
     ];
+    let hw = ("HARDWARE_SRGB", "1".to_string());
     Ok(Box::new(Composite {
         with_depth: p.build_with(&stages, &[("WRITE_DEPTH", "1".into())])?,
         colour_only: p.build(&stages)?,
+        hardware: [
+            p.build_with(&stages, &[("WRITE_DEPTH", "1".into()), hw.clone()])?,
+            p.build_with(&stages, &[hw])?,
+        ],
     }))
 }
 
@@ -111,12 +128,15 @@ impl RunPasses for Composite {
     fn run(&self, _: &Pass, f: &Frame) {
         let output = f.targets.get(world_target(f.scene));
         let depth = output.depth_stencil.is_some() || output.shared_depth.is_some();
-        let p = if depth {
-            &self.with_depth
-        } else {
-            &self.colour_only
-        };
         let (gl, u) = (f.gl, f.uniforms);
+        // GL encodes where the output is sRGB and wants encoded values.
+        let hardware = u.output_srgb && output.colors[0].internal_format == glow::SRGB8_ALPHA8;
+        let p = match (depth, hardware) {
+            (true, false) => &self.with_depth,
+            (false, false) => &self.colour_only,
+            (true, true) => &self.hardware[0],
+            (false, true) => &self.hardware[1],
+        };
         // A frame with no lights has no lighting pass and no light to add.
         let light = f.targets.find(LIGHT_ACCUMULATION);
         unsafe {
@@ -137,6 +157,9 @@ impl RunPasses for Composite {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
+            if hardware {
+                gl.enable(glow::FRAMEBUFFER_SRGB);
+            }
             p.use_program();
             gbuffer::bind_for_reading(gl, p, f.targets.get(gbuffer::NAME), u);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
@@ -154,7 +177,7 @@ impl RunPasses for Composite {
             }
             image_based_lighting::bind(gl, p, ibl);
             p.set_vec3("u_background", f.scene.render.background);
-            p.set_bool("u_output_srgb", u.output_srgb);
+            p.set_bool("u_output_srgb", u.output_srgb && !hardware);
             f.meshes.fullscreen.draw();
 
             super::ambient_light::unbind_result(gl);
@@ -165,6 +188,7 @@ impl RunPasses for Composite {
             gl.active_texture(glow::TEXTURE0);
             gbuffer::unbind(gl);
             gl.use_program(None);
+            gl.disable(glow::FRAMEBUFFER_SRGB);
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.depth_func(glow::LESS);

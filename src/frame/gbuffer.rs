@@ -78,11 +78,29 @@ pub fn shininess_code(table: &[f32], shininess: f32) -> usize {
         .map_or(0, |(i, _)| i)
 }
 
-/// Whether the frame's G-buffer is the packed one: asked for, and the
-/// scene's shininess values fit the table.
+/// Whether the frame's G-buffer is the packed one: asked for, the scene's
+/// shininess values fit the table, and no far field reads it (`kept_by`).
 pub fn octahedral(scene: &crate::scene::Scene) -> bool {
     scene.render.gbuffer == crate::scene::material::GBufferNormals::Octahedral
-        && shininess_table(scene).len() <= SHININESS_TABLE
+        && kept_by(scene).is_none()
+}
+
+/// Why a frame that asks for the packed G-buffer keeps RGBA16F, in words:
+/// more shininess values than the table holds, or tiled shading's far
+/// field, whose same-surface test (glsl/common/far_field.glsl) takes a
+/// sample's normal within 0.002-0.003 rad of the pixel's: finer than the
+/// 12-bit grid's 1.1e-3 rad, so on curved silhouettes it accepted samples
+/// it should not (measured: 15/255 against forward on scenes/many-lights.toml
+/// at k = 4, where RGBA16F gives 2-4/255).
+pub fn kept_by(scene: &crate::scene::Scene) -> Option<String> {
+    let n = shininess_table(scene).len();
+    if n > SHININESS_TABLE {
+        return Some(format!(
+            "{n} shininess values, more than the packed table's {SHININESS_TABLE}"
+        ));
+    }
+    let far = scene.render.path == crate::scene::RenderPath::Tiled && scene.render.far_field > 0;
+    far.then(|| "the far field compares normals finer than 12 bits".to_string())
 }
 
 /// Bytes a pixel of `formats` take (the G-buffer's, for `gloss plan`).

@@ -10,8 +10,9 @@
 //! * every G-buffer path draws the shipped scenes with it as forward does
 //!   (the deferred bound), no further from it than with the RGBA16F normal
 //!   but for one step;
-//! * `gloss plan` says which encoding and the bytes a pixel, and a scene with
-//!   more shininess values than the table keeps RGBA16F and says why.
+//! * `gloss plan` says which encoding and the bytes a pixel; a scene with
+//!   more shininess values than the table, or tiled shading's far field,
+//!   keeps RGBA16F and says why.
 
 use crate::common;
 use glam::Vec3;
@@ -333,4 +334,12 @@ fn the_plan_names_the_encoding_and_its_bytes_per_pixel() {
     let (what, normal) = gbuffer_pass(&many);
     assert_eq!(normal.1, glow::RGBA16F);
     assert!(what.contains("more than the packed table's 64"), "{what}");
+
+    // Tiled shading's far field compares normals finer than the 12-bit grid:
+    // RGBA16F, said.
+    let mut far = on(&scene, RenderPath::Tiled, GBufferNormals::Octahedral);
+    far.render.far_field = 4;
+    let (what, normal) = gbuffer_pass(&far);
+    assert_eq!(normal, ("normal_shininess", glow::RGBA16F));
+    assert!(what.contains("far field"), "{what}");
 }

@@ -67,10 +67,8 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     let normal = if gbuffer::octahedral(scene) {
         format!("octahedral normal RGBA8, {table} shininess values")
     } else if scene.render.gbuffer == GBufferNormals::Octahedral {
-        format!(
-            "normal RGBA16F: {table} shininess values, more than the packed table's {}",
-            gbuffer::SHININESS_TABLE
-        )
+        let why = gbuffer::kept_by(scene).unwrap_or_default();
+        format!("normal RGBA16F, not octahedral: {why}")
     } else {
         "normal RGBA16F".to_string()
     };

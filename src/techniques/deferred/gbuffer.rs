@@ -112,7 +112,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         program: p.build(&stages)?,
         thin: p.build_with(&stages, &[("THIN_GBUFFER", "1".into())])?,
         octahedral: [
-            p.build_with(&stages, &[oct.clone()])?,
+            p.build_with(&stages, std::slice::from_ref(&oct))?,
             p.build_with(&stages, &[("THIN_GBUFFER", "1".into()), oct])?,
         ],
     }))

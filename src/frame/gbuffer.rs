@@ -60,11 +60,15 @@ pub fn shininess_table(scene: &crate::scene::Scene) -> Vec<f32> {
     t
 }
 
-/// The table as the shaders' `u_shininess_table[16]` reads it (unused
-/// entries 0).
-pub fn shininess_uniform(table: &[f32]) -> [glam::Vec4; SHININESS_TABLE / 4] {
+/// The scene's table as the shaders' `u_shininess_table[16]` reads it
+/// (unused entries 0).
+pub fn shininess_uniform(scene: &crate::scene::Scene) -> [glam::Vec4; SHININESS_TABLE / 4] {
     let mut v = [glam::Vec4::ZERO; SHININESS_TABLE / 4];
-    for (i, s) in table.iter().take(SHININESS_TABLE).enumerate() {
+    for (i, s) in shininess_table(scene)
+        .iter()
+        .take(SHININESS_TABLE)
+        .enumerate()
+    {
         v[i / 4][i % 4] = *s;
     }
     v

@@ -2,13 +2,33 @@
 // in shader"): the texture coordinate is the window coordinate divided by the
 // G-buffer's size, and the world position is rebuilt from the depth buffer.
 // Units: unit::GBUFFER_* in src/frame/uniforms.rs; layout: src/frame/gbuffer.rs.
-uniform sampler2D u_gbuffer_normal;     // normal.xyz, shininess
+uniform sampler2D u_gbuffer_normal;     // normal.xyz, shininess (or packed: decode_normal_shininess)
 uniform sampler2D u_gbuffer_albedo;     // diffuse albedo (linear)
 uniform sampler2D u_gbuffer_specular;   // specular colour (linear)
 uniform sampler2D u_gbuffer_depth;      // depth: the position is rebuilt from it
 uniform sampler2D u_gbuffer_alpha;      // gAlpha, when u_gbuffer_material is not 0
 uniform sampler2D u_gbuffer_convert;    // gConvert, for the report's encoding
 #include "common/reflectance.glsl"
+#include "common/octahedral.glsl"
+// The packed G-buffer (render.gbuffer = "octahedral", src/frame/gbuffer.rs):
+// the normal attachment is RGBA8, rgb the octahedral normal in 12 + 12 bits,
+// a the shininess's index into the scene's table (four a vec4).
+uniform bool u_gbuffer_octahedral;
+uniform vec4 u_shininess_table[16];
+#ifdef VARIANT_GBUFFER_OCTAHEDRAL
+#define GBUFFER_OCTAHEDRAL (VARIANT_GBUFFER_OCTAHEDRAL == 1)
+#else
+#define GBUFFER_OCTAHEDRAL u_gbuffer_octahedral
+#endif
+
+// The normal attachment's texel as (unit normal, shininess).
+vec4 decode_normal_shininess(vec4 texel) {
+    if (GBUFFER_OCTAHEDRAL) {
+        int code = int(texel.a * 255.0 + 0.5);
+        return vec4(oct_unpack(texel.rgb), u_shininess_table[code >> 2][code & 3]);
+    }
+    return texel;
+}
 #include "common/gbuffer_material.glsl"
 uniform mat4 u_inverse_view_projection;
 // The view's rectangle in the target (x, y, width, height in pixels): the
@@ -83,7 +103,7 @@ vec3 world_position(vec2 uv, float depth) {
 Surface read_geometry_texel(ivec2 texel) {
     Surface s;
     s.depth = texelFetch(u_gbuffer_depth, texel, 0).r;
-    vec4 ns = texelFetch(u_gbuffer_normal, texel, 0);
+    vec4 ns = decode_normal_shininess(texelFetch(u_gbuffer_normal, texel, 0));
     s.N = ns.xyz;
     s.shininess = ns.w;
     s.kd = vec3(0.0);
@@ -96,7 +116,7 @@ Surface read_geometry_texel(ivec2 texel) {
 Surface read_gbuffer(vec2 uv) {
     Surface s;
     s.depth = texture(u_gbuffer_depth, uv).r;
-    vec4 ns = texture(u_gbuffer_normal, uv);
+    vec4 ns = decode_normal_shininess(texture(u_gbuffer_normal, uv));
     s.N = ns.xyz;
     s.shininess = ns.w;
     s.kd = texture(u_gbuffer_albedo, uv).rgb;

@@ -14,5 +14,11 @@ vec4 output_color(vec3 c) {
 #ifdef CASCADE_TINT
     c *= g_cascade_tint;   // the cascade colours (shadows/cascaded_shadow_maps.glsl)
 #endif
+#ifdef HARDWARE_SRGB
+    // GL encodes: an SRGB8_ALPHA8 output with GL_FRAMEBUFFER_SRGB on (the
+    // composite, src/frame/plan.rs hardware_srgb); it clamps to [0, 1] too.
+    return vec4(c, 1.0);
+#else
     return vec4(u_output_srgb ? srgb_encode(c) : c, 1.0);
+#endif
 }

@@ -1,6 +1,8 @@
 #version 330 core
 // G-buffer pass: write the surface's data, no lighting.
-//   0: normal (world, unit) + shininess   RGBA16F
+//   0: normal (world, unit) + shininess   RGBA16F; OCTAHEDRAL_NORMALS: RGBA8,
+//      rgb the octahedral normal (common/octahedral.glsl), a the shininess's
+//      index into the scene's table (u_shininess_code, src/frame/gbuffer.rs)
 //   1: diffuse albedo, ambient occlusion  SRGB8_ALPHA8 (GL_FRAMEBUFFER_SRGB on)
 //   2: specular colour (a microfacet pixel: its emission), reflectivity  SRGB8_ALPHA8
 //   depth: the depth buffer itself; position is rebuilt from it.
@@ -11,6 +13,8 @@
 #include "common/material.glsl"
 #include "common/alpha_test.glsl"
 #include "common/gbuffer_material.glsl"
+#include "common/octahedral.glsl"
+uniform float u_shininess_code;
 in vec3 v_position;
 in vec3 v_normal;
 #include "common/surface_in.glsl"
@@ -33,7 +37,12 @@ void main() {
     vec2 uv = surface_uv();
     alpha_test(material_alpha(uv));
     // The normal after the normal map (notes 01 §8.4) is what the lights read.
-    g_normal_shininess = vec4(bumped_normal(safe_normal(v_normal, v_position), uv), u_shininess);
+    vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
+#ifdef OCTAHEDRAL_NORMALS
+    g_normal_shininess = vec4(oct_pack(N), u_shininess_code / 255.0);
+#else
+    g_normal_shininess = vec4(N, u_shininess);
+#endif
     // Alpha: what the ambient term is multiplied by (glTF's occlusion).
     g_albedo = vec4(material_diffuse(uv) * surface_color(), material_occlusion(uv));
     // A microfacet pixel's specular weight is k_s in gAlpha: its rgb holds

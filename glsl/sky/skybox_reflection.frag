@@ -14,7 +14,7 @@ void main() {
     vec2 uv = gbuffer_uv();
     float depth = texture(u_gbuffer_depth, uv).r;
     float reflectivity = texture(u_gbuffer_specular, uv).a;
-    vec3 N = texture(u_gbuffer_normal, uv).xyz;
+    vec3 N = decode_normal_shininess(texture(u_gbuffer_normal, uv)).xyz;
     vec3 V = normalize(u_eye - world_position(uv, depth));
     vec3 mirrored = environment_reflection(reflectivity, N, V);
     // The background (depth 1) and surfaces that mirror nothing add nothing.

@@ -22,6 +22,13 @@
 //! one 8-bit step of forward (docs/deferred/gbuffer.md works through it).
 //! The light pre-pass needs no material: its "thin" G-buffer has only
 //! attachment 0 and depth.
+//!
+//! The packed G-buffer (`render.gbuffer = "octahedral"`) holds attachment 0
+//! in RGBA8 instead (4 bytes a pixel, not 8): rgb the octahedral normal
+//! (Cigolle et al. 2014) in 12 + 12 bits (src/math/octahedral.rs), a the
+//! index of the pixel's shininess in the scene's table of shininess values
+//! (`shininess_table`, at most `SHININESS_TABLE` of them; with more, the
+//! frame keeps RGBA16F and `gloss plan` says why).
 
 use crate::frame::targets::{Depth, TargetDesc};
 use crate::frame::uniforms::{FrameUniforms, unit};
@@ -33,6 +40,82 @@ pub const NORMAL: (&str, u32) = ("normal_shininess", glow::RGBA16F);
 pub const ALBEDO: (&str, u32) = ("albedo", glow::SRGB8_ALPHA8);
 pub const SPECULAR: (&str, u32) = ("specular", glow::SRGB8_ALPHA8);
 pub const CONVERT: (&str, u32) = ("convert", glow::RGBA8);
+/// Attachment 0 of the packed G-buffer: octahedral normal + shininess index.
+pub const OCTAHEDRAL: (&str, u32) = ("normal_octahedral", glow::RGBA8);
+/// The most shininess values the packed G-buffer's table holds (16 vec4).
+pub const SHININESS_TABLE: usize = 64;
+
+/// Every shininess the scene's materials give the G-buffer, ascending and
+/// each once: a microfacet material's is its lobe's Blinn-Phong
+/// equivalent, as `DrawList::set_object_uniforms` sets it.
+pub fn shininess_table(scene: &crate::scene::Scene) -> Vec<f32> {
+    let mut t: Vec<f32> = (scene.materials.iter())
+        .map(|m| {
+            m.microfacet
+                .map_or(m.shininess, |f| f.equivalent_shininess())
+        })
+        .collect();
+    t.sort_by(f32::total_cmp);
+    t.dedup();
+    t
+}
+
+/// The scene's table as the shaders' `u_shininess_table[16]` reads it
+/// (unused entries 0).
+pub fn shininess_uniform(scene: &crate::scene::Scene) -> [glam::Vec4; SHININESS_TABLE / 4] {
+    let mut v = [glam::Vec4::ZERO; SHININESS_TABLE / 4];
+    for (i, s) in shininess_table(scene)
+        .iter()
+        .take(SHININESS_TABLE)
+        .enumerate()
+    {
+        v[i / 4][i % 4] = *s;
+    }
+    v
+}
+
+/// The index the packed G-buffer stores for `shininess`: its place in the
+/// table, or the nearest value's.
+pub fn shininess_code(table: &[f32], shininess: f32) -> usize {
+    (table.iter().enumerate())
+        .min_by(|a, b| (a.1 - shininess).abs().total_cmp(&(b.1 - shininess).abs()))
+        .map_or(0, |(i, _)| i)
+}
+
+/// Whether the frame's G-buffer is the packed one: asked for, the scene's
+/// shininess values fit the table, and no far field reads it (`kept_by`).
+pub fn octahedral(scene: &crate::scene::Scene) -> bool {
+    scene.render.gbuffer == crate::scene::material::GBufferNormals::Octahedral
+        && kept_by(scene).is_none()
+}
+
+/// Why a frame that asks for the packed G-buffer keeps RGBA16F, in words:
+/// more shininess values than the table holds, or tiled shading's far
+/// field, whose same-surface test (glsl/common/far_field.glsl) takes a
+/// sample's normal within 0.002-0.003 rad of the pixel's: finer than the
+/// 12-bit grid's 1.1e-3 rad, so on curved silhouettes it accepted samples
+/// it should not (measured: 15/255 against forward on scenes/many-lights.toml
+/// at k = 4, where RGBA16F gives 2-4/255).
+pub fn kept_by(scene: &crate::scene::Scene) -> Option<String> {
+    let n = shininess_table(scene).len();
+    if n > SHININESS_TABLE {
+        return Some(format!(
+            "{n} shininess values, more than the packed table's {SHININESS_TABLE}"
+        ));
+    }
+    let far = scene.render.path == crate::scene::RenderPath::Tiled && scene.render.far_field > 0;
+    far.then(|| "the far field compares normals finer than 12 bits".to_string())
+}
+
+/// Bytes a pixel of `formats` take (the G-buffer's, for `gloss plan`).
+pub fn bytes_per_pixel(formats: &[(&str, u32)], depth: u32) -> u32 {
+    let b = |f: u32| match f {
+        glow::RGBA16F => 8,
+        glow::RGBA32F => 16,
+        _ => 4,
+    };
+    formats.iter().map(|&(_, f)| b(f)).sum::<u32>() + b(depth)
+}
 
 /// The attachments that hold the microfacet triple (notes 03, Geometry
 /// Pass): none when no opaque material is microfacet, gAlpha alone for the
@@ -78,15 +161,22 @@ pub fn has_stencil(format: u32) -> bool {
 pub const NAME: &str = "gbuffer";
 
 /// The full G-buffer, or the thin one of the light pre-pass, with depth in
-/// `depth` (`depth_format`) and the `material_attachments` after the rest.
-pub fn target(thin: bool, depth: u32, material: &[(&'static str, u32)]) -> TargetDesc {
+/// `depth` (`depth_format`) and the `material_attachments` after the rest;
+/// attachment 0 `OCTAHEDRAL` for the packed G-buffer, else `NORMAL`.
+pub fn target(
+    thin: bool,
+    octahedral: bool,
+    depth: u32,
+    material: &[(&'static str, u32)],
+) -> TargetDesc {
+    let normal = if octahedral { OCTAHEDRAL } else { NORMAL };
     TargetDesc {
         name: NAME,
         samples: 1,
         colors: if thin {
-            [&[NORMAL][..], material].concat()
+            [&[normal][..], material].concat()
         } else {
-            [&[NORMAL, ALBEDO, SPECULAR][..], material].concat()
+            [&[normal, ALBEDO, SPECULAR][..], material].concat()
         },
         depth: Depth::Own(depth),
         ping_pong: false,
@@ -134,6 +224,12 @@ pub fn bind_for_reading(
         gl.active_texture(glow::TEXTURE0);
     }
     bind_material(gl, p, gbuffer);
+    // The packed normal attachment and the shininess its alpha indexes.
+    let packed = c.first().is_some_and(|t| t.internal_format == OCTAHEDRAL.1);
+    p.set_bool("u_gbuffer_octahedral", packed);
+    if packed {
+        p.set_vec4_array("u_shininess_table", &frame.shininess_table);
+    }
     p.set_mat4("u_inverse_view_projection", &frame.inverse_view_projection);
     p.set_vec4("u_viewport", glam::IVec4::from(frame.viewport).as_vec4());
     p.set_vec3("u_eye", frame.eye);

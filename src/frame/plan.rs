@@ -68,6 +68,19 @@ impl DepthPrecision {
     }
 }
 
+/// Whether the composite (techniques/deferred/composite.rs) writes straight
+/// into an 8-bit output that GL encodes (SRGB8_ALPHA8 with
+/// GL_FRAMEBUFFER_SRGB on while it draws): a G-buffer path with no post
+/// chain and `render.hardware_srgb`. Every other pass that draws into that
+/// output keeps GL_FRAMEBUFFER_SRGB off, so it stores and blends the values
+/// its shader encodes exactly as into an RGBA8 output.
+pub fn hardware_srgb(scene: &Scene) -> bool {
+    use crate::scene::RenderPath::{Deferred, Tiled, Volumes};
+    scene.render.hardware_srgb
+        && scene.post.is_empty()
+        && matches!(scene.render.path, Deferred | Volumes | Tiled)
+}
+
 impl FramePlan {
     /// Ask every technique of `registry`, in order, for its passes and targets.
     /// Two techniques may name the same target only if they describe it alike.
@@ -156,7 +169,7 @@ impl FramePlan {
         targets.extend(post::targets(scene, world_depth));
         let srgb_gamma =
             (scene.post.last()).is_some_and(|p| matches!(p, PostPass::Gamma { srgb: true, .. }));
-        let format = if srgb_gamma {
+        let format = if srgb_gamma || hardware_srgb(scene) {
             glow::SRGB8_ALPHA8
         } else {
             glow::RGBA8

@@ -28,6 +28,9 @@ pub struct FrameUniforms {
     /// The view's rectangle in the targets: x, y, width, height in pixels
     /// (the whole target but for a split view).
     pub viewport: [i32; 4],
+    /// The packed G-buffer's shininess values, four a vec4
+    /// (src/frame/gbuffer.rs `shininess_uniform`).
+    pub shininess_table: [glam::Vec4; 16],
 }
 
 /// Texture units. A pass binds a texture with

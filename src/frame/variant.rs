@@ -61,6 +61,9 @@ pub struct LightingVariant {
     /// uniform block (every light fits in it on every GL, and
     /// `render.light_block` is on) rather than from the buffer texture.
     pub light_block: bool,
+    /// The G-buffer is the packed one (octahedral normal + shininess index,
+    /// src/frame/gbuffer.rs `octahedral`).
+    pub gbuffer_octahedral: bool,
 }
 
 impl LightingVariant {
@@ -81,6 +84,7 @@ impl LightingVariant {
         normal_maps: true,
         gbuffer_material: -1,
         light_block: false,
+        gbuffer_octahedral: false,
     };
 
     /// The parts `scene` needs, or `GENERAL` with `render.specialize` off.
@@ -118,6 +122,7 @@ impl LightingVariant {
             gbuffer_material: material,
             light_block: scene.render.light_block
                 && scene.lights.len() <= crate::frame::lights::LIGHTS_ON_EVERY_GL,
+            gbuffer_octahedral: gbuffer::octahedral(scene),
         }
     }
 
@@ -148,6 +153,7 @@ impl LightingVariant {
                 self.gbuffer_material.to_string(),
             ),
             ("VARIANT_LIGHT_BLOCK", b(self.light_block)),
+            ("VARIANT_GBUFFER_OCTAHEDRAL", b(self.gbuffer_octahedral)),
         ]
     }
 
@@ -216,6 +222,9 @@ impl LightingVariant {
         }
         if self.light_block {
             extra.push_str(", lights from the uniform block");
+        }
+        if self.gbuffer_octahedral {
+            extra.push_str(", octahedral G-buffer normal");
         }
         format!("{types}, {falloff}, {shadows}, {model}{extra}")
     }

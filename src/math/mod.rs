@@ -45,6 +45,7 @@ pub mod height_field;
 pub mod interpolation;
 pub mod keyframes;
 pub(crate) mod lcg;
+pub mod octahedral;
 pub mod preetham;
 pub mod skinning;
 pub mod slerp;

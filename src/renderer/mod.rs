@@ -328,6 +328,7 @@ impl Renderer {
             output_srgb: srgb,
             output_encoded: encoded,
             viewport: [x, y, w, h],
+            shininess_table: crate::frame::gbuffer::shininess_uniform(&self.scene),
             clear_color: if srgb {
                 bg.map(lighting::srgb_encode)
             } else {

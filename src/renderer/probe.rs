@@ -18,7 +18,7 @@ use super::Renderer;
 use super::probe_read::{read_color, read_depths, read_resolved, read_stencil, read_texture};
 use super::probe_shadow::{ShadowProbe, probe_shadows};
 pub use super::probe_tiles::TileLists;
-use crate::frame::gbuffer::NORMAL;
+use crate::frame::gbuffer::{NORMAL, OCTAHEDRAL};
 use crate::frame::targets::Depth;
 use crate::gl::framebuffer::Framebuffer;
 use crate::scene::{Camera, LightKind};
@@ -145,6 +145,13 @@ impl Renderer {
                     let n = Vec3::new(value[0], value[1], value[2]);
                     let source = "the G-buffer's normal_shininess.xyz";
                     normal = (n.length() > 0.5).then(|| (n.normalize(), source));
+                }
+                if (attachment, format) == OCTAHEDRAL && normal.is_none() {
+                    let b = |c: f32| (c * 255.0).round() as u8;
+                    let n =
+                        crate::math::octahedral::unpack([b(value[0]), b(value[1]), b(value[2])]);
+                    let source = "the G-buffer's normal_octahedral.rgb, decoded";
+                    normal = Some((n, source));
                 }
                 targets.push(TargetValue {
                     name: format!("{}.{attachment}", desc.name),

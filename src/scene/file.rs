@@ -165,6 +165,8 @@ pub(super) struct RenderFile {
     pub(super) ibl: bool,
     pub(super) area_lights: bool,
     pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
+    pub(super) gbuffer: super::settings::GBufferNormals,
+    pub(super) hardware_srgb: bool,
 }
 
 impl Default for RenderFile {
@@ -224,6 +226,8 @@ impl Default for RenderFile {
             ibl: false,
             area_lights: true,
             gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
+            gbuffer: super::settings::GBufferNormals::Rgba16f,
+            hardware_srgb: true,
         }
     }
 }

@@ -24,7 +24,7 @@ use anyhow::{Result, bail};
 use glam::Vec3;
 use std::path::PathBuf;
 
-pub use super::settings::{GBufferEncoding, Model};
+pub use super::settings::{GBufferEncoding, GBufferNormals, Model};
 
 /// Notes 03's material triple.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -212,6 +212,8 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         area_lights: r.area_lights,
         ambient_occlusion: super::ambient_occlusion::resolve(f.ambient_occlusion.as_ref())?,
         gbuffer_encoding: r.gbuffer_encoding,
+        gbuffer: r.gbuffer,
+        hardware_srgb: r.hardware_srgb,
     })
 }
 
@@ -347,6 +349,12 @@ pub struct RenderSettings {
     pub ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusion>,
     /// How the G-buffer holds the microfacet triple (notes 03, Geometry Pass).
     pub gbuffer_encoding: super::settings::GBufferEncoding,
+    /// How the G-buffer holds the normal and shininess (src/frame/gbuffer.rs).
+    pub gbuffer: super::settings::GBufferNormals,
+    /// The composite writes linear light into an SRGB8_ALPHA8 output with
+    /// GL_FRAMEBUFFER_SRGB on, where the frame allows (src/frame/plan.rs
+    /// `hardware_srgb`); false: pow() in the shader, as every other pass.
+    pub hardware_srgb: bool,
 }
 
 impl RenderSettings {

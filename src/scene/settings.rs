@@ -383,3 +383,14 @@ setting! {
         PlainRgba16f = "plain_rgba16f",
     }
 }
+
+setting! {
+    /// How the G-buffer holds the normal and shininess (src/frame/gbuffer.rs).
+    pub enum GBufferNormals {
+        /// Normal xyz and shininess in half floats (RGBA16F, 8 bytes).
+        Rgba16f = "rgba16f",
+        /// Octahedral normal (Cigolle et al. 2014) in 12 + 12 bits and the
+        /// shininess as an index into the scene's table (RGBA8, 4 bytes).
+        Octahedral = "octahedral",
+    }
+}

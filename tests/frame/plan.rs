@@ -220,7 +220,13 @@ fn a_frame_allocates_only_the_buffers_its_passes_use() {
     };
     for path in [RenderPath::Deferred, RenderPath::Volumes, RenderPath::Tiled] {
         let s = with_path(&base, path);
-        assert_eq!(attachments(&s, "output"), ["color:RGBA8"], "{path:?}");
+        // The composite encodes sRGB by GL_FRAMEBUFFER_SRGB into it
+        // (render.hardware_srgb; tests/deferred/hardware_srgb.rs).
+        assert_eq!(
+            attachments(&s, "output"),
+            ["color:SRGB8_ALPHA8"],
+            "{path:?}"
+        );
         assert_eq!(
             depth_of(&s, "gbuffer").as_deref(),
             Some("depth:DEPTH_COMPONENT24"),
@@ -264,7 +270,10 @@ fn a_frame_allocates_only_the_buffers_its_passes_use() {
     let text = plan(&with_path(&base, RenderPath::Deferred)).to_string();
     let (w, h) = base.render.size;
     let output = size_name(4 * u64::from(w) * u64::from(h));
-    assert!(text.contains(&format!("color:RGBA8  ({output})")), "{text}");
+    assert!(
+        text.contains(&format!("color:SRGB8_ALPHA8  ({output})")),
+        "{text}"
+    );
 }
 
 /// Notes 01 §6.2: opaque objects drawn front to back, by the eye-space depth

@@ -114,9 +114,10 @@ fn the_chain_allocates_only_the_targets_its_steps_need() {
             .iter()
             .any(|n| *n == HDR || n.starts_with("post"))
     );
+    // (SRGB8_ALPHA8: the composite encodes by GL_FRAMEBUFFER_SRGB.)
     assert_eq!(
         plan(&none).target("output").unwrap().attachments(),
-        ["color:RGBA8"]
+        ["color:SRGB8_ALPHA8"]
     );
     let mut forward = none.clone();
     forward.render.path = gloss::scene::RenderPath::Forward;

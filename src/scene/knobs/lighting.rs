@@ -3,7 +3,9 @@
 //! shading's grid and far field; the G-buffer's material encoding.
 
 use super::{Kind, Knob, Value, index};
-use crate::scene::settings::{Accumulation, DeferredLights, Falloff, GBufferEncoding};
+use crate::scene::settings::{
+    Accumulation, DeferredLights, Falloff, GBufferEncoding, GBufferNormals,
+};
 
 pub static CUTOFF: Knob = Knob {
     key: "render.cutoff",
@@ -174,6 +176,32 @@ pub static AREA_LIGHTS: Knob = Knob {
     set: |r, v| {
         if let Value::Bool(b) = v {
             r.area_lights = b;
+        }
+    },
+};
+
+pub static GBUFFER_NORMALS: Knob = Knob {
+    key: "render.gbuffer",
+    label: "G-buffer normal",
+    help: "how the G-buffer holds the normal and shininess: xyz and shininess in half floats (RGBA16F, 8 bytes), or an octahedral normal in 12 + 12 bits with the shininess as an index into the scene's table (RGBA8, 4 bytes; Cigolle et al. 2014)",
+    kind: Kind::Choice(GBufferNormals::WORDS),
+    get: |r| Value::Choice(index(GBufferNormals::ALL, r.gbuffer)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.gbuffer = GBufferNormals::ALL[i];
+        }
+    },
+};
+
+pub static HARDWARE_SRGB: Knob = Knob {
+    key: "render.hardware_srgb",
+    label: "sRGB by the hardware",
+    help: "the composite writes linear light into an SRGB8_ALPHA8 output with GL_FRAMEBUFFER_SRGB on (no post chain, 8-bit output); off: pow() in the shader",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.hardware_srgb),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.hardware_srgb = b;
         }
     },
 };

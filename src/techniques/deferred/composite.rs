@@ -10,6 +10,13 @@
 //! into a mirror (stencil/mirror.rs) it writes only inside the mirror's
 //! stencil region, and only where nothing nearer is there already.
 //!
+//! Where the output allows (an 8-bit output with no post chain,
+//! `render.hardware_srgb`: src/frame/plan.rs `hardware_srgb`), the output
+//! is SRGB8_ALPHA8 and GL_FRAMEBUFFER_SRGB is on while the composite draws:
+//! the shader writes linear light and GL encodes it, instead of pow() per
+//! pixel. Elsewhere (a post chain's linear HDR target, the RGBA32F output of
+//! error measurements, `render.hardware_srgb = false`) the shader encodes.
+//!
 //! GL state: with a depth buffer in the output, depth test GL_ALWAYS (one
 //! triangle covers every pixel exactly once, notes 02), or GL_LEQUAL and the
 //! stencil test for a reflected view; without one (nothing after the
@@ -17,7 +24,8 @@
 //! shader that writes colour only;
 //! textures on the G-buffer units and unit::LIGHT, unbound after (and, with
 //! render.ibl, image-based lighting's maps with GL_TEXTURE_CUBE_MAP_SEAMLESS
-//! on); restores no depth or stencil test, GL_LESS, no seamless filtering.
+//! on); GL_FRAMEBUFFER_SRGB on an SRGB8_ALPHA8 output; restores no depth or
+//! stencil test, GL_LESS, no seamless filtering, no GL_FRAMEBUFFER_SRGB.
 
 use crate::frame::gbuffer;
 use crate::frame::image_based_lighting;
@@ -42,7 +50,7 @@ pub const COMPOSITE: Technique = Technique {
     shaders: &["common/fullscreen.vert", "deferred/composite.frag"],
     scene: "scenes/deferred-shading.toml",
     docs: "docs/deferred/composite.md",
-    knobs: &[&knobs::AMBIENT, &knobs::BACKGROUND],
+    knobs: &[&knobs::AMBIENT, &knobs::BACKGROUND, &knobs::HARDWARE_SRGB],
     passes,
     targets,
     create,
@@ -68,7 +76,9 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                         Some(_) => "ambient x albedo x AO + light",
                         None => "ambient x albedo + light",
                     },
-                    if scene.post.is_empty() {
+                    if crate::frame::plan::hardware_srgb(scene) {
+                        "sRGB encode by GL_FRAMEBUFFER_SRGB"
+                    } else if scene.post.is_empty() {
                         "sRGB encode"
                     } else {
                         "linear: a post chain follows"
@@ -88,16 +98,19 @@ fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
 }
 
 struct Composite {
-    /// Writes the G-buffer's depth into the output (gl_FragDepth), for the
-    /// passes that draw after it.
-    with_depth: Program,
-    /// Colour only: the output has no depth buffer (nothing after the
-    /// composite tests depth). A shader that writes gl_FragDepth costs more
-    /// per pixel even when its depth goes nowhere, so this is its own program.
-    colour_only: Program,
-    /// The same two, tinting each pixel by its cascade (shadow.cascade_colors).
-    with_depth_tinted: Program,
-    colour_only_tinted: Program,
+    /// The programs, by [`variant`]: writing the G-buffer's depth into the
+    /// output (gl_FragDepth, for the passes that draw after it) or colour
+    /// only (the output has no depth buffer: nothing after the composite
+    /// tests depth; a shader that writes gl_FragDepth costs more per pixel
+    /// even when its depth goes nowhere); tinting each pixel by its cascade
+    /// (shadow.cascade_colors) or not; writing linear light for GL to
+    /// encode (HARDWARE_SRGB) or encoding in the shader.
+    programs: Vec<Program>,
+}
+
+/// Which of the composite's programs: depth written, cascade tints, sRGB by GL.
+fn variant(depth: bool, tints: bool, hardware: bool) -> usize {
+    usize::from(depth) * 4 + usize::from(tints) * 2 + usize::from(hardware)
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -105,19 +118,25 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "common/fullscreen.vert"),
         (glow::FRAGMENT_SHADER, "deferred/composite.frag"),
     ];
-    let depth = ("WRITE_DEPTH", "1".to_string());
-    let tints = ("CASCADE_TINTS", "1".to_string());
-    let with_depth_tinted = p.build_with(&stages, &[depth.clone(), tints.clone()])?;
-    let colour_only_tinted = p.build_with(&stages, &[tints])?;
-    for program in [&with_depth_tinted, &colour_only_tinted] {
-        program.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);
+    let mut programs = Vec::with_capacity(8);
+    for i in 0..8 {
+        let (depth, tints, hardware) = (i & 4 != 0, i & 2 != 0, i & 1 != 0);
+        let defines: Vec<(&str, String)> = [
+            (depth, "WRITE_DEPTH"),
+            (tints, "CASCADE_TINTS"),
+            (hardware, "HARDWARE_SRGB"),
+        ]
+        .into_iter()
+        .filter(|(on, _)| *on)
+        .map(|(_, name)| (name, "1".to_string()))
+        .collect();
+        let program = p.build_with(&stages, &defines)?;
+        if tints {
+            program.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);
+        }
+        programs.push(program);
     }
-    Ok(Box::new(Composite {
-        with_depth: p.build_with(&stages, &[depth])?,
-        colour_only: p.build(&stages)?,
-        with_depth_tinted,
-        colour_only_tinted,
-    }))
+    Ok(Box::new(Composite { programs }))
 }
 
 impl RunPasses for Composite {
@@ -125,13 +144,10 @@ impl RunPasses for Composite {
         let output = f.targets.get(world_target(f.scene));
         let depth = output.depth_stencil.is_some() || output.shared_depth.is_some();
         let tints = shadows::cascade_tints(f.scene);
-        let p = match (depth, tints) {
-            (true, false) => &self.with_depth,
-            (false, false) => &self.colour_only,
-            (true, true) => &self.with_depth_tinted,
-            (false, true) => &self.colour_only_tinted,
-        };
         let (gl, u) = (f.gl, f.uniforms);
+        // GL encodes where the output is sRGB and wants encoded values.
+        let hardware = u.output_srgb && output.colors[0].internal_format == glow::SRGB8_ALPHA8;
+        let p = &self.programs[variant(depth, tints, hardware)];
         // A frame with no lights has no lighting pass and no light to add.
         let light = f.targets.find(LIGHT_ACCUMULATION);
         unsafe {
@@ -152,6 +168,9 @@ impl RunPasses for Composite {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
+            if hardware {
+                gl.enable(glow::FRAMEBUFFER_SRGB);
+            }
             p.use_program();
             gbuffer::bind_for_reading(gl, p, f.targets.get(gbuffer::NAME), u);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
@@ -169,7 +188,7 @@ impl RunPasses for Composite {
             }
             image_based_lighting::bind(gl, p, ibl);
             p.set_vec3("u_background", f.scene.render.background);
-            p.set_bool("u_output_srgb", u.output_srgb);
+            p.set_bool("u_output_srgb", u.output_srgb && !hardware);
             if tints {
                 f.shadows.bind_cascade_block(gl, true);
             }
@@ -186,6 +205,7 @@ impl RunPasses for Composite {
             gl.active_texture(glow::TEXTURE0);
             gbuffer::unbind(gl);
             gl.use_program(None);
+            gl.disable(glow::FRAMEBUFFER_SRGB);
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.depth_func(glow::LESS);

@@ -5,6 +5,11 @@
 //! src/frame/gbuffer.rs. The light pre-pass fills a thin G-buffer (normal,
 //! shininess and depth only): the fragment shader's other outputs are dropped.
 //!
+//! With `render.gbuffer = "octahedral"` the normal attachment is packed
+//! (src/frame/gbuffer.rs): the shader writes the octahedral normal in
+//! 12 + 12 bits and, per object, the index of its shininess in the scene's
+//! table (`u_shininess_code`), instead of xyz and shininess in half floats.
+//!
 //! GL state: sets glDepthFunc(render.depth_func, or the material's
 //! depth_func per object where it differs), depth writes, back-face
 //! culling, glFrontFace per object, GL_FRAMEBUFFER_SRGB (albedo and specular
@@ -14,11 +19,12 @@ use crate::frame::draw_list::DrawList;
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
-use crate::frame::targets::TargetDesc;
+use crate::frame::targets::{Depth, TargetDesc};
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::knobs;
+use crate::scene::material::GBufferNormals;
 use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
@@ -31,7 +37,7 @@ pub const GBUFFER: Technique = Technique {
     shaders: &["deferred/gbuffer.vert", "deferred/gbuffer.frag"],
     scene: "scenes/deferred-shading.toml",
     docs: "docs/deferred/gbuffer.md",
-    knobs: &[&knobs::DEPTH_FUNC],
+    knobs: &[&knobs::DEPTH_FUNC, &knobs::GBUFFER_NORMALS],
     passes,
     targets,
     create,
@@ -48,29 +54,42 @@ fn layout(scene: &Scene) -> Option<bool> {
     }
 }
 
-fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
+fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     let n = scene.opaque_objects();
-    match layout(scene) {
-        None => vec![],
-        Some(false) => vec![Pass::new(
-            "gbuffer",
-            gbuffer::NAME,
-            format!("{n} objects"),
-            file!(),
-        )],
-        Some(true) => vec![Pass::new(
-            "gbuffer",
-            gbuffer::NAME,
-            format!("{n} objects (normal + shininess, depth)"),
-            file!(),
-        )],
-    }
+    // Which normal encoding, and the bytes a pixel the G-buffer takes.
+    let Some(t) = targets(scene, lights).pop() else {
+        return vec![];
+    };
+    let Depth::Own(depth) = t.depth else {
+        return vec![];
+    };
+    let table = gbuffer::shininess_table(scene).len();
+    let normal = if gbuffer::octahedral(scene) {
+        format!("octahedral normal RGBA8, {table} shininess values")
+    } else if scene.render.gbuffer == GBufferNormals::Octahedral {
+        let why = gbuffer::kept_by(scene).unwrap_or_default();
+        format!("normal RGBA16F, not octahedral: {why}")
+    } else {
+        "normal RGBA16F".to_string()
+    };
+    let bytes = gbuffer::bytes_per_pixel(&t.colors, depth);
+    let what = match layout(scene) {
+        Some(true) => "normal + shininess, depth; ",
+        _ => "",
+    };
+    vec![Pass::new(
+        "gbuffer",
+        gbuffer::NAME,
+        format!("{n} objects ({what}{normal}; {bytes} bytes/px)"),
+        file!(),
+    )]
 }
 
 fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
     let depth = gbuffer::depth_format(scene);
     let material = gbuffer::material_attachments(scene);
-    (layout(scene).map(|thin| gbuffer::target(thin, depth, &material)))
+    let octahedral = gbuffer::octahedral(scene);
+    (layout(scene).map(|thin| gbuffer::target(thin, octahedral, depth, &material)))
         .into_iter()
         .collect()
 }
@@ -79,6 +98,8 @@ struct GBufferPass {
     program: Program,
     /// The light pre-pass's: the material triple at locations 1 and 2.
     thin: Program,
+    /// The two, writing the packed normal (OCTAHEDRAL_NORMALS).
+    octahedral: [Program; 2],
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -86,9 +107,14 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
         (glow::FRAGMENT_SHADER, "deferred/gbuffer.frag"),
     ];
+    let oct = ("OCTAHEDRAL_NORMALS", "1".to_string());
     Ok(Box::new(GBufferPass {
         program: p.build(&stages)?,
         thin: p.build_with(&stages, &[("THIN_GBUFFER", "1".into())])?,
+        octahedral: [
+            p.build_with(&stages, std::slice::from_ref(&oct))?,
+            p.build_with(&stages, &[("THIN_GBUFFER", "1".into()), oct])?,
+        ],
     }))
 }
 
@@ -96,7 +122,14 @@ impl RunPasses for GBufferPass {
     fn run(&self, _: &Pass, f: &Frame) {
         let target = f.targets.get(gbuffer::NAME);
         let thin = layout(f.scene) == Some(true);
-        let p = if thin { &self.thin } else { &self.program };
+        let packed = target.colors[0].internal_format == gbuffer::OCTAHEDRAL.1;
+        let p = match (thin, packed) {
+            (false, false) => &self.program,
+            (true, false) => &self.thin,
+            (false, true) => &self.octahedral[0],
+            (true, true) => &self.octahedral[1],
+        };
+        let table = gbuffer::shininess_table(f.scene);
         let (gl, u) = (f.gl, f.uniforms);
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
@@ -171,6 +204,16 @@ impl RunPasses for GBufferPass {
                 // to read them (notes 01 §5: wrap rules, filter; §8.4).
                 f.draws.bind_textures(gl, p, d, &f.scene.render);
                 f.draws.set_object_uniforms(p, d);
+                if packed {
+                    // The index of its shininess (as set_object_uniforms sets it).
+                    let s = d
+                        .microfacet
+                        .map_or(d.shininess, |m| m.equivalent_shininess());
+                    p.set_f32(
+                        "u_shininess_code",
+                        gbuffer::shininess_code(&table, s) as f32,
+                    );
+                }
                 f.draws.mesh(d).draw();
             }
 

@@ -6,7 +6,7 @@
 //! - `draw_list`: the scene's objects on the GPU, ready to draw.
 //! - `lights`: what each light derives from the scene (volume radius, volume
 //!   mesh) and the std140 block the shaders read: computed once, here.
-//! - `uniforms`: per-frame values and the texture units, named once.
+//! - `uniforms`: per-frame values; `units`: the texture units, named once.
 //! - `gbuffer`: the G-buffer's layout, written by one technique and read by many.
 //! - `targets`: the render targets the plan names, allocated and sized.
 //! - `meshes`: the meshes every screen or volume pass draws.
@@ -48,6 +48,7 @@ pub mod technique;
 pub mod texturing;
 pub mod timing;
 pub mod uniforms;
+pub mod units;
 pub mod variant;
 pub mod views;
 

@@ -7,6 +7,7 @@
 
 use crate::frame::Frame;
 use crate::frame::draw_list::DrawList;
+use crate::frame::forward_pass;
 use crate::frame::post::world_target;
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::gl::program::Program;
@@ -36,12 +37,7 @@ pub fn opaque_depth(f: &Frame) -> Option<glow::Texture> {
 pub unsafe fn set_up(f: &Frame, p: &Program) {
     let (gl, u) = (f.gl, f.uniforms);
     unsafe {
-        if f.view.clips() {
-            gl.enable(glow::CLIP_DISTANCE0);
-        }
-        for i in 0..f.scene.clip_planes.len() as u32 {
-            gl.enable(glow::CLIP_DISTANCE1 + i);
-        }
+        forward_pass::enable_clip_distances(f);
         p.use_program();
         f.view.set_uniforms(p, u.eye, &f.scene.clip_planes);
         p.set_mat4("u_view_projection", &u.view_projection);
@@ -85,10 +81,7 @@ pub unsafe fn draw(f: &Frame, p: &Program, items: &[usize]) {
 pub unsafe fn restore(f: &Frame) {
     let gl = f.gl;
     unsafe {
-        gl.disable(glow::CLIP_DISTANCE0);
-        for i in 0..f.scene.clip_planes.len() as u32 {
-            gl.disable(glow::CLIP_DISTANCE1 + i);
-        }
+        forward_pass::disable_clip_distances(f);
         gl.front_face(glow::CCW);
         DrawList::unbind_textures(gl);
         gl.bind_texture(glow::TEXTURE_2D, None);

@@ -6,7 +6,7 @@
 //! Units are few (GL 3.3 promises 16 to a fragment shader), so passes that
 //! never run one program together share them. A constant on the same unit
 //! as another says so with `shares` and says why no draw reads both;
-//! tests/frame/units.rs fails on two constants on one unit that do not,
+//! tests/trace/units.rs fails on two constants on one unit that do not,
 //! and replays every shipped scene's traced frame on every path to check
 //! that no draw has two samplers of different types on one unit and that
 //! no unit is rebound by other code between its bind and its draw.

@@ -252,17 +252,18 @@ pub fn check(calls: &[Call], programs: &Samplers) -> Vec<String> {
                         .iter()
                         .find(|&&(t, k)| t != last && !same_owner(file(k), file(j)));
                     if let Some(&(t, k)) = clobbered {
-                        let reader = read
-                            .iter()
-                            .find(|(s, u, _)| *u == key.0 && target_of(s.ty) == Some(key.1));
+                        let readers: Vec<String> = (read.iter())
+                            .filter(|(s, u, _)| *u == key.0 && target_of(s.ty) == Some(key.1))
+                            .map(|(s, _, _)| format!("`{}`", s.name))
+                            .collect();
                         found.insert(format!(
-                            "{} ({}): texture {t} bound at {} is replaced by texture {last} bound at {} before a draw at {} reads it as `{}`",
+                            "{} ({}): texture {t} bound at {} is replaced by texture {last} bound at {} before a draw at {} reads it as {}",
                             unit_names(key.0),
                             trace::constant_name(key.1, "TextureTarget").unwrap_or("?"),
                             at(&calls[k]),
                             at(&calls[j]),
                             at(c),
-                            reader.map_or("?", |r| r.0.name.as_str()),
+                            readers.join(", "),
                         ));
                     }
                 }

@@ -7,6 +7,7 @@
 
 pub use super::inspect_views::{Mode, View, follow, views};
 use crate::frame::targets::Targets;
+use crate::frame::units as unit;
 use crate::geometry;
 use crate::gl::Gl;
 use crate::gl::framebuffer::Framebuffer;
@@ -148,12 +149,12 @@ impl Inspector {
             gl.viewport(0, 0, into.width, into.height);
             gl.disable(glow::DEPTH_TEST);
             p.use_program();
-            gl.active_texture(glow::TEXTURE0);
+            gl.active_texture(glow::TEXTURE0 + unit::DEMO_VIEW);
             gl.bind_texture(glow::TEXTURE_2D, texture);
             if level > 0 || mipmapped {
-                gl.bind_sampler(0, Some(self.levels));
+                gl.bind_sampler(unit::DEMO_VIEW, Some(self.levels));
             }
-            p.set_i32("u_texture", 0);
+            p.set_i32("u_texture", unit::DEMO_VIEW as i32);
             p.set_f32("u_level", level as f32);
             p.set_i32("u_mode", index);
             p.set_bool("u_encode", encode);
@@ -171,7 +172,7 @@ impl Inspector {
             );
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             self.fullscreen.draw();
-            gl.bind_sampler(0, None);
+            gl.bind_sampler(unit::DEMO_VIEW, None);
             gl.bind_texture(glow::TEXTURE_2D, None);
             gl.use_program(None);
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);

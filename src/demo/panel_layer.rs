@@ -5,6 +5,7 @@
 //! full-screen triangle. On llvmpipe, laying egui's meshes out and
 //! rasterising its text costs far more than one textured triangle.
 
+use crate::frame::units as unit;
 use crate::geometry;
 use crate::gl::Gl;
 use crate::gl::framebuffer::Framebuffer;
@@ -104,9 +105,9 @@ impl PanelLayer {
             gl.enable(glow::BLEND);
             gl.blend_func(glow::ONE, glow::ONE_MINUS_SRC_ALPHA);
             p.use_program();
-            gl.active_texture(glow::TEXTURE0);
+            gl.active_texture(glow::TEXTURE0 + unit::DEMO_VIEW);
             gl.bind_texture(glow::TEXTURE_2D, Some(layer.colors[0].id));
-            p.set_i32("u_layer", 0);
+            p.set_i32("u_layer", unit::DEMO_VIEW as i32);
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             self.triangle.draw();
             gl.bind_texture(glow::TEXTURE_2D, None);

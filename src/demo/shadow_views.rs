@@ -32,6 +32,7 @@
 
 use crate::frame::pass::CUBE_FACES;
 use crate::frame::shadows::{Caster, ShadowMaps};
+use crate::frame::units as unit;
 use crate::geometry;
 use crate::gl::Gl;
 use crate::gl::framebuffer::{Framebuffer, bytemuck_f32};
@@ -199,11 +200,15 @@ impl ShadowViews {
             gl.clear_color(0.0, 0.0, 0.0, 0.0);
             p.use_program();
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
-            p.set_i32("u_map", 0);
-            p.set_i32("u_layout", 0);
-            p.set_i32("u_cube_map", 1);
+            p.set_i32("u_map", unit::DEMO_VIEW as i32);
+            p.set_i32("u_layout", unit::DEMO_VIEW as i32);
+            p.set_i32("u_cube_map", unit::DEMO_VIEW_CUBE as i32);
             if let Some((_, m)) = map {
-                let unit = if cube { 1 } else { 0 };
+                let unit = if cube {
+                    unit::DEMO_VIEW_CUBE
+                } else {
+                    unit::DEMO_VIEW
+                };
                 gl.active_texture(glow::TEXTURE0 + unit);
                 gl.bind_texture(m.target, Some(m.texture));
                 gl.bind_sampler(unit, Some(self.sampler));
@@ -230,7 +235,7 @@ impl ShadowViews {
             // 3. The stretch into the view.
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(into.id));
             gl.viewport(0, 0, w, h);
-            gl.active_texture(glow::TEXTURE0);
+            gl.active_texture(glow::TEXTURE0 + unit::DEMO_VIEW);
             gl.bind_texture(glow::TEXTURE_2D, Some(layout.colors[0].id));
             p.set_i32("u_pass", 1);
             p.set_f32("u_min", lo);

@@ -56,10 +56,7 @@ impl BillboardDraws {
             glow::DYNAMIC_DRAW,
         )?;
         let vao = unsafe {
-            let vao = gl
-                .create_vertex_array()
-                .map_err(|e| anyhow!("glGenVertexArrays: {e}"))?;
-            live::made(Kind::VertexArray);
+            let vao = live::new_vertex_array(gl)?;
             gl.bind_vertex_array(Some(vao));
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(instances.id));
             // location, components, byte offset

@@ -95,14 +95,14 @@ impl Drop for IblMaps {
 /// Bind the maps for `p` (in use), which includes
 /// glsl/common/image_based_lighting.glsl; without maps, u_has_ibl is false
 /// and the samplers name units whose sampler types they share (a samplerCube
-/// on unit::ENVIRONMENT, the table on unit 0's sampler2D), so no draw mixes
+/// on unit::ENVIRONMENT, the table on unit::IBL_BRDF_OFF), so no draw mixes
 /// two sampler types on one unit.
 pub fn bind(gl: &glow::Context, p: &Program, maps: Option<&IblMaps>) {
     p.set_bool("u_has_ibl", maps.is_some());
     let Some(m) = maps else {
         p.set_i32("u_ibl_irradiance", unit::ENVIRONMENT as i32);
         p.set_i32("u_ibl_prefiltered", unit::ENVIRONMENT as i32);
-        p.set_i32("u_ibl_brdf", 0);
+        p.set_i32("u_ibl_brdf", unit::IBL_BRDF_OFF as i32);
         return;
     };
     p.set_i32("u_ibl_irradiance", unit::IBL_IRRADIANCE as i32);

@@ -6,7 +6,9 @@
 //! - `draw_list`: the scene's objects on the GPU, ready to draw.
 //! - `lights`: what each light derives from the scene (volume radius, volume
 //!   mesh) and the std140 block the shaders read: computed once, here.
-//! - `uniforms`: per-frame values and the texture units, named once.
+//! - `uniforms`: per-frame values; `units`: the texture units, named once.
+//! - `forward_pass`: the clip distances and per-frame uniforms the passes
+//!   that light objects the forward way set up alike.
 //! - `gbuffer`: the G-buffer's layout, written by one technique and read by many.
 //! - `targets`: the render targets the plan names, allocated and sized.
 //! - `meshes`: the meshes every screen or volume pass draws.
@@ -30,6 +32,7 @@ pub mod culling;
 pub mod draw_list;
 pub mod draw_textures;
 pub mod environment;
+pub mod forward_pass;
 pub mod gbuffer;
 pub mod image_based_lighting;
 pub mod light_maps;
@@ -49,6 +52,7 @@ pub mod technique;
 pub mod texturing;
 pub mod timing;
 pub mod uniforms;
+pub mod units;
 pub mod variant;
 pub mod views;
 

@@ -19,6 +19,7 @@
 //! lighting passes `bind` them and call `shadow_visibility` in their shaders.
 
 use crate::frame::draw_list::DrawList;
+use crate::frame::units as unit;
 use crate::gl::Gl;
 use crate::gl::buffer::Buffer;
 use crate::gl::depth_map::DepthMap;
@@ -38,10 +39,10 @@ pub use sampler::setup_program;
 
 /// The uniform-block binding point of the `Shadows` block.
 pub const SHADOWS_BINDING: u32 = 1;
-/// Texture units: the 2D maps on 6..10, the cube maps on 10..14 (the
-/// G-buffer and light textures use 0..6).
-pub const UNIT_2D: u32 = 6;
-pub const UNIT_CUBE: u32 = UNIT_2D + MAX_SHADOW_MAPS_2D as u32;
+/// Texture units: the 2D maps on 6..10, the cube maps on 10..14
+/// (src/frame/units.rs).
+pub const UNIT_2D: u32 = unit::SHADOW_MAPS_2D;
+pub const UNIT_CUBE: u32 = unit::SHADOW_CUBES;
 /// Bytes of one `ShadowMap` in the std140 block: a mat4 and two vec4.
 const SHADOW_STRIDE: usize = 96;
 const SLOTS: usize = MAX_SHADOW_MAPS_2D + MAX_SHADOW_CUBES;

@@ -1,7 +1,7 @@
 //! Buffer objects: a uniform buffer for the std140 light array.
 
 use super::Gl;
-use anyhow::{Result, anyhow};
+use anyhow::Result;
 use glow::HasContext;
 
 /// One buffer object (GL_UNIFORM_BUFFER here; the mesh owns its own VBO/EBO).
@@ -16,10 +16,7 @@ impl Buffer {
     /// Create a buffer of `size` bytes for `target`, contents undefined.
     pub fn new(gl: &Gl, target: u32, size: usize, usage: u32) -> Result<Buffer> {
         unsafe {
-            let id = gl
-                .create_buffer()
-                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            super::live::made(super::live::Kind::Buffer);
+            let id = super::live::new_buffer(gl)?;
             gl.bind_buffer(target, Some(id));
             gl.buffer_data_size(target, size as i32, usage);
             gl.bind_buffer(target, None);

@@ -1,8 +1,10 @@
 //! How many GL objects the owners in this module have made and not yet
 //! freed, per kind, on this thread (a context is current on one thread).
 //! Tests read it to show that switching techniques and reloading scenes
-//! leak nothing; it changes no GL state.
+//! leak nothing; it changes no GL state. `new_buffer` and `new_vertex_array`
+//! make an object and count it, for the owners that make them.
 
+use glow::HasContext;
 use std::cell::Cell;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -39,6 +41,27 @@ fn slot(k: Kind) -> usize {
 
 pub(crate) fn made(k: Kind) {
     LIVE.with(|l| l[slot(k)].set(l[slot(k)].get() + 1));
+}
+
+/// glGenBuffers, counted; the error names the call.
+///
+/// # Safety
+/// A current GL context.
+pub(crate) unsafe fn new_buffer(gl: &glow::Context) -> anyhow::Result<glow::Buffer> {
+    let b = unsafe { gl.create_buffer() }.map_err(|e| anyhow::anyhow!("glGenBuffers: {e}"))?;
+    made(Kind::Buffer);
+    Ok(b)
+}
+
+/// glGenVertexArrays, counted; the error names the call.
+///
+/// # Safety
+/// A current GL context.
+pub(crate) unsafe fn new_vertex_array(gl: &glow::Context) -> anyhow::Result<glow::VertexArray> {
+    let v = unsafe { gl.create_vertex_array() }
+        .map_err(|e| anyhow::anyhow!("glGenVertexArrays: {e}"))?;
+    made(Kind::VertexArray);
+    Ok(v)
 }
 
 pub(crate) fn freed(k: Kind) {

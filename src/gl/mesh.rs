@@ -8,7 +8,7 @@
 
 use super::Gl;
 use crate::geometry::{MeshData, Vertex};
-use anyhow::{Result, anyhow, bail};
+use anyhow::{Result, bail};
 use glow::HasContext;
 
 pub struct Mesh {
@@ -88,26 +88,11 @@ impl Mesh {
         let packed = packed(data);
         let stride = std::mem::size_of::<[f32; 8]>() as i32;
         unsafe {
-            let vao = gl
-                .create_vertex_array()
-                .map_err(|e| anyhow!("glGenVertexArrays: {e}"))?;
-            super::live::made(super::live::Kind::VertexArray);
-            let vbo = gl
-                .create_buffer()
-                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            super::live::made(super::live::Kind::Buffer);
-            let tangents = gl
-                .create_buffer()
-                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            super::live::made(super::live::Kind::Buffer);
-            let colors = gl
-                .create_buffer()
-                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            super::live::made(super::live::Kind::Buffer);
-            let ebo = gl
-                .create_buffer()
-                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            super::live::made(super::live::Kind::Buffer);
+            let vao = super::live::new_vertex_array(gl)?;
+            let vbo = super::live::new_buffer(gl)?;
+            let tangents = super::live::new_buffer(gl)?;
+            let colors = super::live::new_buffer(gl)?;
+            let ebo = super::live::new_buffer(gl)?;
             gl.bind_vertex_array(Some(vao));
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
             gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, as_bytes(&packed), usage);

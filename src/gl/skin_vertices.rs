@@ -16,7 +16,7 @@
 
 use super::Gl;
 use crate::geometry::skin::SkinnedMesh;
-use anyhow::{Result, anyhow, bail};
+use anyhow::{Result, bail};
 use glow::HasContext;
 
 pub struct SkinVertices {
@@ -41,14 +41,8 @@ impl SkinVertices {
             bytes.extend(skin.weights[i].iter().flat_map(|w| w.to_le_bytes()));
         }
         unsafe {
-            let vao = gl
-                .create_vertex_array()
-                .map_err(|e| anyhow!("glGenVertexArrays: {e}"))?;
-            super::live::made(super::live::Kind::VertexArray);
-            let vbo = gl
-                .create_buffer()
-                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            super::live::made(super::live::Kind::Buffer);
+            let vao = super::live::new_vertex_array(gl)?;
+            let vbo = super::live::new_buffer(gl)?;
             gl.bind_vertex_array(Some(vao));
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
             gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &bytes, glow::STATIC_DRAW);

@@ -20,7 +20,7 @@
 //! so a test can tell that a frame really mapped.
 
 use super::Gl;
-use anyhow::{Result, anyhow};
+use anyhow::Result;
 use glow::HasContext;
 use std::cell::Cell;
 
@@ -62,14 +62,8 @@ pub struct StreamBuffer {
 impl StreamBuffer {
     pub fn new(gl: &Gl, attributes: &[(u32, i32, i32)], stride: i32) -> Result<StreamBuffer> {
         unsafe {
-            let vao = gl
-                .create_vertex_array()
-                .map_err(|e| anyhow!("glGenVertexArrays: {e}"))?;
-            super::live::made(super::live::Kind::VertexArray);
-            let vbo = gl
-                .create_buffer()
-                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            super::live::made(super::live::Kind::Buffer);
+            let vao = super::live::new_vertex_array(gl)?;
+            let vbo = super::live::new_buffer(gl)?;
             gl.bind_vertex_array(Some(vao));
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
             gl.buffer_data_size(glow::ARRAY_BUFFER, 4096, glow::STREAM_DRAW);

@@ -12,7 +12,7 @@
 
 use super::Gl;
 use super::live::{Kind, freed, made};
-use anyhow::{Result, anyhow, bail};
+use anyhow::{Result, bail};
 use glow::HasContext;
 
 pub struct TextureBuffer {
@@ -44,10 +44,7 @@ impl TextureBuffer {
     pub fn new(gl: &Gl, format: u32) -> Result<TextureBuffer> {
         let texel_bytes = texel_bytes(format)?;
         unsafe {
-            let buffer = gl
-                .create_buffer()
-                .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-            made(Kind::Buffer);
+            let buffer = super::live::new_buffer(gl)?;
             let texture = match gl.create_texture() {
                 Ok(t) => t,
                 Err(e) => {

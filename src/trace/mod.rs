@@ -16,6 +16,7 @@ pub mod docs;
 pub mod listing;
 pub mod notes_sections;
 pub mod try_it;
+pub mod units;
 
 use crate::gl::Headless;
 use crate::gl::program::Sources;

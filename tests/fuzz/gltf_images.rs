@@ -8,8 +8,9 @@
 //! more memory than the PNG reader may (`png::peak_allowed`).
 
 use crate::alloc::peak_bytes;
+use crate::png::{self, Edit};
 use crate::{root, run, scratch};
-use gloss::gl::texture::{MAX_TEXTURE_SIDE, load_rgba8};
+use gloss::gl::texture::load_rgba8;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use std::sync::OnceLock;
@@ -29,48 +30,24 @@ fn ihdr_width() -> usize {
     glb.windows(8).position(|w| w == sig).unwrap() + 16
 }
 
-#[derive(Clone, Debug)]
-enum Edit {
-    Byte(usize, u8),
-    Cut(usize),
-    Repeat(usize, usize),
-    Size(u32, u32),
-}
-
 fn any_edit() -> impl Strategy<Value = Edit> {
-    prop_oneof![
-        4 => (any::<usize>(), any::<u8>()).prop_map(|(i, b)| Edit::Byte(i, b)),
-        1 => any::<usize>().prop_map(Edit::Cut),
-        1 => (any::<usize>(), 1..200usize).prop_map(|(i, n)| Edit::Repeat(i, n)),
-        2 => (0..=u32::MAX, 0..=u32::MAX).prop_map(|(w, h)| Edit::Size(w, h)),
-    ]
+    png::any_edit(0..=u32::MAX)
 }
 
 fn mutate(bytes: &[u8], edits: &[Edit], ihdr: Option<usize>) -> Vec<u8> {
     let mut b = bytes.to_vec();
     for e in edits {
         match *e {
-            Edit::Byte(i, v) if !b.is_empty() => {
-                let i = i % b.len();
-                b[i] = v;
-            }
-            Edit::Cut(i) => b.truncate(i % (b.len() + 1)),
-            Edit::Repeat(i, n) if !b.is_empty() => {
-                let i = i % b.len();
-                let piece = b[i..(i + n).min(b.len())].to_vec();
-                b.splice(i..i, piece);
-            }
             // The IHDR's width and height, its CRC made right again so the
             // decoder reads the size.
             Edit::Size(w, h) => {
                 if let Some(at) = ihdr.filter(|&at| b.len() >= at + 17) {
-                    b[at..at + 4].copy_from_slice(&w.to_be_bytes());
-                    b[at + 4..at + 8].copy_from_slice(&h.to_be_bytes());
-                    let crc = crate::png::crc32(&b[at - 4..at + 13]);
+                    png::write_size(&mut b, at, w, h);
+                    let crc = png::crc32(&b[at - 4..at + 13]);
                     b[at + 13..at + 17].copy_from_slice(&crc.to_be_bytes());
                 }
             }
-            _ => {}
+            _ => png::edit_bytes(&mut b, e),
         }
     }
     b
@@ -81,29 +58,7 @@ pub fn check(bytes: &[u8], ext: &str) -> Result<(), TestCaseError> {
     let file = scratch(&format!("case.{ext}"));
     std::fs::write(&file, bytes).expect("write the case");
     let texture = gloss::geometry::gltf_image_path(&file, 0);
-    let (result, peak) = peak_bytes(|| load_rgba8(&texture));
-    let allowed = crate::png::peak_allowed(bytes.len());
-    prop_assert!(
-        peak <= allowed,
-        "load_rgba8 held {peak} bytes (at most {allowed})"
-    );
-    match result {
-        Ok(img) => {
-            crate::accepted();
-            let (w, h) = img.dimensions();
-            prop_assert!(
-                (1..=MAX_TEXTURE_SIDE).contains(&w) && (1..=MAX_TEXTURE_SIDE).contains(&h)
-            );
-        }
-        Err(e) => {
-            let m = format!("{e:#}");
-            prop_assert!(
-                m.contains(&format!("case.{ext}#images[0]")),
-                "the message names no file and image: {m}"
-            );
-        }
-    }
-    Ok(())
+    png::check_load(&texture, bytes.len(), &format!("case.{ext}#images[0]"))
 }
 
 #[test]

@@ -94,16 +94,19 @@ fn fix_crcs(png: &mut [u8]) {
 
 const SIDES: [u32; 8] = [0, 1, 2, 8192, 8193, 65535, 0x7fff_ffff, 0xffff_ffff];
 
+/// One change to a file's bytes (shared with gltf_images.rs, whose PNG
+/// sits inside a .glb).
 #[derive(Clone, Debug)]
-enum Edit {
+pub enum Edit {
     Byte(usize, u8),
     Cut(usize),
     Repeat(usize, usize),
+    /// The IHDR's width and height.
     Size(u32, u32),
 }
 
-fn any_edit() -> impl Strategy<Value = Edit> {
-    let side = proptest::sample::select(&SIDES[..]);
+/// Edits, with IHDR sizes drawn from `side`.
+pub fn any_edit(side: impl Strategy<Value = u32> + Clone) -> impl Strategy<Value = Edit> {
     prop_oneof![
         4 => (any::<usize>(), any::<u8>()).prop_map(|(i, b)| Edit::Byte(i, b)),
         1 => any::<usize>().prop_map(Edit::Cut),
@@ -112,26 +115,37 @@ fn any_edit() -> impl Strategy<Value = Edit> {
     ]
 }
 
+/// Apply a byte edit (a byte changed, the file cut, a piece repeated);
+/// `Edit::Size` is the caller's, who knows where the IHDR is.
+pub fn edit_bytes(b: &mut Vec<u8>, e: &Edit) {
+    match *e {
+        Edit::Byte(i, v) if !b.is_empty() => {
+            let i = i % b.len();
+            b[i] = v;
+        }
+        Edit::Cut(i) => b.truncate(i % (b.len() + 1)),
+        Edit::Repeat(i, n) if !b.is_empty() => {
+            let i = i % b.len();
+            let piece = b[i..(i + n).min(b.len())].to_vec();
+            b.splice(i..i, piece);
+        }
+        _ => {}
+    }
+}
+
+/// Write an IHDR's width and height, the width at `at`.
+pub fn write_size(b: &mut [u8], at: usize, w: u32, h: u32) {
+    b[at..at + 4].copy_from_slice(&w.to_be_bytes());
+    b[at + 4..at + 8].copy_from_slice(&h.to_be_bytes());
+}
+
 fn mutate(png: &[u8], edits: &[Edit], fix: bool) -> Vec<u8> {
     let mut b = png.to_vec();
     for e in edits {
         match *e {
-            Edit::Byte(i, v) if !b.is_empty() => {
-                let i = i % b.len();
-                b[i] = v;
-            }
-            Edit::Cut(i) => b.truncate(i % (b.len() + 1)),
-            Edit::Repeat(i, n) if !b.is_empty() => {
-                let i = i % b.len();
-                let piece = b[i..(i + n).min(b.len())].to_vec();
-                b.splice(i..i, piece);
-            }
             // IHDR's width and height: bytes 16..24.
-            Edit::Size(w, h) if b.len() >= 24 => {
-                b[16..20].copy_from_slice(&w.to_be_bytes());
-                b[20..24].copy_from_slice(&h.to_be_bytes());
-            }
-            _ => {}
+            Edit::Size(w, h) if b.len() >= 24 => write_size(&mut b, 16, w, h),
+            _ => edit_bytes(&mut b, e),
         }
     }
     if fix {
@@ -144,8 +158,19 @@ fn mutate(png: &[u8], edits: &[Edit], fix: bool) -> Vec<u8> {
 pub fn check(bytes: &[u8]) -> Result<(), TestCaseError> {
     let path = scratch("case.png");
     std::fs::write(&path, bytes).expect("write the case");
-    let (result, peak) = peak_bytes(|| load_rgba8(&path));
-    let allowed = peak_allowed(bytes.len());
+    check_load(&path, bytes.len(), "case.png")
+}
+
+/// The property for an image read from `texture` (a file of `file_len`
+/// bytes): an image of at most MAX_TEXTURE_SIDE a side or an error whose
+/// message names `named`, within `peak_allowed` bytes held.
+pub fn check_load(
+    texture: &std::path::Path,
+    file_len: usize,
+    named: &str,
+) -> Result<(), TestCaseError> {
+    let (result, peak) = peak_bytes(|| load_rgba8(texture));
+    let allowed = peak_allowed(file_len);
     prop_assert!(
         peak <= allowed,
         "load_rgba8 held {peak} bytes (at most {allowed})"
@@ -160,7 +185,7 @@ pub fn check(bytes: &[u8]) -> Result<(), TestCaseError> {
         }
         Err(e) => {
             let m = format!("{e:#}");
-            prop_assert!(m.contains("case.png"), "the message names no file: {m}");
+            prop_assert!(m.contains(named), "the message does not name {named}: {m}");
         }
     }
     Ok(())
@@ -171,7 +196,7 @@ fn load_rgba8_takes_any_mutated_png() {
     let n = seeds().len();
     let case = (
         0..n,
-        proptest::collection::vec(any_edit(), 1..5),
+        proptest::collection::vec(any_edit(proptest::sample::select(&SIDES[..])), 1..5),
         any::<bool>(),
     )
         .prop_map(|(i, edits, fix)| mutate(&seeds()[i], &edits, fix));

@@ -10,7 +10,8 @@
 //!   does now (`GLOSS_BLESS=1` rewrites them), and every technique's page
 //!   has one for its technique, with how to try it in the demo (the keys
 //!   it names are the demo's);
-//! * docs/README.md's map of the notes is the registry's.
+//! * docs/README.md's map of the notes is the registry's;
+//! * texture units never collide (units.rs).
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -19,6 +20,7 @@ mod docs_listings;
 mod order;
 mod registry;
 mod try_it;
+mod units;
 
 use gloss::gl::Headless;
 

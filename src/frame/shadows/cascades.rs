@@ -20,9 +20,8 @@ use glow::HasContext;
 /// The uniform-block binding point of the `Cascades` block.
 pub const CASCADES_BINDING: u32 = 3;
 /// The cascades' GL_TEXTURE_2D_ARRAY: past the 16 units every GL 3.3 has
-/// (units 0-15 are taken, 16 and 17 hold the G-buffer's microfacet triple,
-/// 18-20 glTF's maps, 21-23 image-based lighting: src/frame/uniforms.rs).
-pub const UNIT_CASCADES: u32 = 24;
+/// (src/frame/units.rs).
+pub const UNIT_CASCADES: u32 = crate::frame::units::SHADOW_CASCADES;
 /// std140: MAX_CASCADES mat4, MAX_CASCADES vec4 (near, far, texel, 0), then
 /// the camera's eye (w: count) and forward (w: blend band), and the flags
 /// (x: cascade colours).

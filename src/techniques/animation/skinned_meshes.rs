@@ -29,6 +29,7 @@ use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::skins::SkinDraw;
 use crate::frame::targets::{OUTPUT, TargetDesc};
+use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::gl::texture_buffer::TextureBuffer;
@@ -174,9 +175,9 @@ impl RunPasses for SkinnedMeshes {
                         .flat_map(f32::to_le_bytes)
                         .collect();
                     self.joint_texture.write(&bytes);
-                    gl.active_texture(glow::TEXTURE0);
+                    gl.active_texture(glow::TEXTURE0 + unit::JOINT_TEXTURE);
                     gl.bind_texture(glow::TEXTURE_BUFFER, Some(self.joint_texture.texture));
-                    program.set_i32("u_joint_texture", 0);
+                    program.set_i32("u_joint_texture", unit::JOINT_TEXTURE as i32);
                 } else {
                     program.set_mat4_array("u_joints", &joints);
                 }

@@ -29,7 +29,9 @@
 //!
 //! GL state: depth test and writes, blending, the colour mask; restores all.
 
-use super::transparent_draws::{self as draws, bind, opaque_depth, transparent_items, unbind};
+use super::transparent_draws::{
+    self as draws, begin_composite, bind, end_composite, opaque_depth, transparent_items, unbind,
+};
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -231,28 +233,13 @@ impl DepthPeeling {
 
     /// 3. The peeled layers over the opaque image.
     fn composite(&self, f: &Frame) {
-        let gl = f.gl;
-        let output = f.targets.get(world_target(f.scene));
         let layers = f.targets.get(PEELED_LAYERS);
         unsafe {
-            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
-            let (x, y, w, h) = f.view.rect(output.width, output.height);
-            gl.viewport(x, y, w, h);
-            gl.enable(glow::BLEND);
-            gl.blend_func(glow::ONE, glow::ONE_MINUS_SRC_ALPHA);
-            gl.color_mask(true, true, true, false);
-            if let Some(region) = f.view.stencil {
-                gl.enable(glow::STENCIL_TEST);
-                gl.stencil_func(glow::EQUAL, region.into(), 0xff);
-                gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
-            }
+            // Premultiplied "over": the layers' colour plus the world's
+            // behind them by one minus their alpha.
+            begin_composite(f, glow::ONE, glow::ONE_MINUS_SRC_ALPHA);
             self.draw_layer(f, layers.colors[0].id);
-            gl.stencil_func(glow::ALWAYS, 0, 0xff);
-            gl.disable(glow::STENCIL_TEST);
-            gl.color_mask(true, true, true, true);
-            gl.blend_func(glow::ONE, glow::ZERO);
-            gl.disable(glow::BLEND);
-            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+            end_composite(f.gl);
         }
     }
 }

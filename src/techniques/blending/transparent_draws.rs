@@ -2,11 +2,13 @@
 //! share with each other: which transparent objects a view draws, the
 //! uniforms of the lit glass shader (glsl/blending/transparent_surface.glsl,
 //! the same as transparency.rs sets), drawing them, and the texture the
-//! opaque world's depth is in. Nothing here changes blending or the depth
-//! test: the technique files do that, in their papers' order.
+//! opaque world's depth is in, and the composite's target and restore. Nothing
+//! here chooses blending or the depth test: the technique files do that, in
+//! their papers' order (the composite's blend factors are their arguments).
 
 use crate::frame::Frame;
 use crate::frame::draw_list::DrawList;
+use crate::frame::forward_pass;
 use crate::frame::post::world_target;
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::gl::program::Program;
@@ -36,12 +38,7 @@ pub fn opaque_depth(f: &Frame) -> Option<glow::Texture> {
 pub unsafe fn set_up(f: &Frame, p: &Program) {
     let (gl, u) = (f.gl, f.uniforms);
     unsafe {
-        if f.view.clips() {
-            gl.enable(glow::CLIP_DISTANCE0);
-        }
-        for i in 0..f.scene.clip_planes.len() as u32 {
-            gl.enable(glow::CLIP_DISTANCE1 + i);
-        }
+        forward_pass::enable_clip_distances(f);
         p.use_program();
         f.view.set_uniforms(p, u.eye, &f.scene.clip_planes);
         p.set_mat4("u_view_projection", &u.view_projection);
@@ -85,10 +82,7 @@ pub unsafe fn draw(f: &Frame, p: &Program, items: &[usize]) {
 pub unsafe fn restore(f: &Frame) {
     let gl = f.gl;
     unsafe {
-        gl.disable(glow::CLIP_DISTANCE0);
-        for i in 0..f.scene.clip_planes.len() as u32 {
-            gl.disable(glow::CLIP_DISTANCE1 + i);
-        }
+        forward_pass::disable_clip_distances(f);
         gl.front_face(glow::CCW);
         DrawList::unbind_textures(gl);
         gl.bind_texture(glow::TEXTURE_2D, None);
@@ -121,5 +115,47 @@ pub unsafe fn unbind(f: &Frame, unit: u32) {
         f.gl.active_texture(glow::TEXTURE0 + unit);
         f.gl.bind_texture(glow::TEXTURE_2D, None);
         f.gl.active_texture(glow::TEXTURE0);
+    }
+}
+
+/// The composite onto the world's target: blending with the technique's
+/// factors `src`, `dst` (glBlendFunc), colour only (the world's alpha
+/// kept), and for a mirror's reflected view inside its stencil region
+/// only; `end_composite` restores it.
+///
+/// # Safety
+/// A current GL context.
+pub unsafe fn begin_composite(f: &Frame, src: u32, dst: u32) {
+    let gl = f.gl;
+    let output = f.targets.get(world_target(f.scene));
+    unsafe {
+        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
+        let (x, y, w, h) = f.view.rect(output.width, output.height);
+        gl.viewport(x, y, w, h);
+        gl.enable(glow::BLEND);
+        gl.blend_func(src, dst);
+        gl.color_mask(true, true, true, false);
+        // A mirror's reflected view: inside its stencil region only.
+        if let Some(region) = f.view.stencil {
+            gl.enable(glow::STENCIL_TEST);
+            gl.stencil_func(glow::EQUAL, region.into(), 0xff);
+            gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
+        }
+    }
+}
+
+/// Undo `begin_composite`: no stencil test, every colour channel written,
+/// no blending (GL_ONE, GL_ZERO), the default framebuffer bound.
+///
+/// # Safety
+/// A current GL context.
+pub unsafe fn end_composite(gl: &glow::Context) {
+    unsafe {
+        gl.stencil_func(glow::ALWAYS, 0, 0xff);
+        gl.disable(glow::STENCIL_TEST);
+        gl.color_mask(true, true, true, true);
+        gl.blend_func(glow::ONE, glow::ZERO);
+        gl.disable(glow::BLEND);
+        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
     }
 }

@@ -28,7 +28,9 @@
 //! GL state: blending, depth writes and culling as above, the colour mask
 //! (the image stays opaque); restores all.
 
-use super::transparent_draws::{self as draws, bind, opaque_depth, transparent_items, unbind};
+use super::transparent_draws::{
+    self as draws, begin_composite, bind, end_composite, opaque_depth, transparent_items, unbind,
+};
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -184,21 +186,9 @@ impl WeightedBlended {
     /// Step 3: the weighted average over the opaque image.
     fn composite(&self, f: &Frame) {
         let (gl, p) = (f.gl, &self.composite);
-        let output = f.targets.get(world_target(f.scene));
         let sums = f.targets.get(OIT_ACCUMULATION);
         unsafe {
-            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(output.id));
-            let (x, y, w, h) = f.view.rect(output.width, output.height);
-            gl.viewport(x, y, w, h);
-            gl.enable(glow::BLEND);
-            gl.blend_func(glow::ONE_MINUS_SRC_ALPHA, glow::SRC_ALPHA);
-            gl.color_mask(true, true, true, false);
-            // A mirror's reflected view: inside its stencil region only.
-            if let Some(region) = f.view.stencil {
-                gl.enable(glow::STENCIL_TEST);
-                gl.stencil_func(glow::EQUAL, region.into(), 0xff);
-                gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
-            }
+            begin_composite(f, glow::ONE_MINUS_SRC_ALPHA, glow::SRC_ALPHA);
             p.use_program();
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             bind(f, p, "u_accum", unit::OIT_FIRST, Some(sums.colors[0].id));
@@ -207,12 +197,7 @@ impl WeightedBlended {
             unbind(f, unit::OIT_FIRST);
             unbind(f, unit::OIT_SECOND);
             gl.use_program(None);
-            gl.stencil_func(glow::ALWAYS, 0, 0xff);
-            gl.disable(glow::STENCIL_TEST);
-            gl.color_mask(true, true, true, true);
-            gl.blend_func(glow::ONE, glow::ZERO);
-            gl.disable(glow::BLEND);
-            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+            end_composite(gl);
         }
     }
 }

@@ -23,6 +23,7 @@
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::environment::Environment;
+use crate::frame::forward_pass;
 use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::ltc_area_lights;
@@ -176,27 +177,16 @@ impl RunPasses for Forward {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
-            if f.view.clips() {
-                gl.enable(glow::CLIP_DISTANCE0);
-            }
             // Edges only (notes 01 §3.3-3.4: what the clipper makes of each triangle).
             if f.scene.render.wireframe {
                 gl.polygon_mode(glow::FRONT_AND_BACK, glow::LINE);
             }
-            // The scene's clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
-            for i in 0..f.scene.clip_planes.len() as u32 {
-                gl.enable(glow::CLIP_DISTANCE1 + i);
-            }
+            // A reflected view's plane (GL_CLIP_DISTANCE0), and the scene's
+            // clip planes (notes 01 §3.3), GL_CLIP_DISTANCE1 on.
+            forward_pass::enable_clip_distances(f);
 
-            p.use_program();
-            p.set_mat4("u_view_projection", &u.view_projection);
-            p.set_vec3("u_eye", u.eye);
-            p.set_vec3("u_ambient", settings.ambient);
-            p.set_i32("u_light_count", u.light_count);
-            p.set_bool("u_output_srgb", u.output_srgb);
-            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
+            // The program, the camera, the lights, the material's units.
+            forward_pass::use_with_frame_uniforms(f, p);
             p.set_i32("u_light_map", unit::LIGHT_MAP as i32);
             // The environment reflective materials mirror (notes 03,
             // Implementation), filtered across the cube map's faces.
@@ -256,10 +246,7 @@ impl RunPasses for Forward {
 
             // Restore the state this pass changed.
             gl.polygon_mode(glow::FRONT_AND_BACK, glow::FILL);
-            gl.disable(glow::CLIP_DISTANCE0);
-            for i in 0..f.scene.clip_planes.len() as u32 {
-                gl.disable(glow::CLIP_DISTANCE1 + i);
-            }
+            forward_pass::disable_clip_distances(f);
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);

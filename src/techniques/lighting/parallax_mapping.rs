@@ -30,6 +30,7 @@
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::environment::Environment;
+use crate::frame::forward_pass;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
@@ -138,23 +139,11 @@ impl RunPasses for ParallaxMapping {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
-            if f.view.clips() {
-                gl.enable(glow::CLIP_DISTANCE0);
-            }
-            for i in 0..f.scene.clip_planes.len() as u32 {
-                gl.enable(glow::CLIP_DISTANCE1 + i);
-            }
+            forward_pass::enable_clip_distances(f);
 
-            // shader.use(); the lesson's uniforms: heightScale, and the method.
-            p.use_program();
-            p.set_mat4("u_view_projection", &u.view_projection);
-            p.set_vec3("u_eye", u.eye);
-            p.set_vec3("u_ambient", settings.ambient);
-            p.set_i32("u_light_count", u.light_count);
-            p.set_bool("u_output_srgb", u.output_srgb);
-            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
+            // shader.use(); the forward pass's uniforms, then the lesson's:
+            // heightScale, and the method.
+            forward_pass::use_with_frame_uniforms(f, p);
             p.set_i32("u_height_map", unit::HEIGHT_MAP as i32);
             let method = match settings.parallax {
                 Parallax::Plain => 1,
@@ -203,10 +192,7 @@ impl RunPasses for ParallaxMapping {
             }
 
             // Restore the state this pass changed.
-            gl.disable(glow::CLIP_DISTANCE0);
-            for i in 0..f.scene.clip_planes.len() as u32 {
-                gl.disable(glow::CLIP_DISTANCE1 + i);
-            }
+            forward_pass::disable_clip_distances(f);
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);

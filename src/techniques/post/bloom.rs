@@ -73,7 +73,12 @@ pub const MAX_TAPS: usize = 2048;
 /// a blur whose level does not exist has none), the merge comes last.
 const MERGE_STEP: u32 = 12;
 /// Texture units of the merge's four blurs (the image is unit::POST_INPUT).
-const BLUR_UNITS: [u32; 4] = [1, 2, 3, 4];
+const BLUR_UNITS: [u32; 4] = [
+    unit::BLOOM_BLURS,
+    unit::BLOOM_BLURS + 1,
+    unit::BLOOM_BLURS + 2,
+    unit::BLOOM_BLURS + 3,
+];
 /// The format of the levels: the chain's own.
 const FORMAT: u32 = post::HDR_FORMAT;
 

@@ -28,6 +28,7 @@
 //! glCullFace(GL_FRONT); restores no depth test, GL_LESS, no depth clamp,
 //! no polygon offset, no culling, GL_BACK, GL_CCW.
 
+use super::depth_pass;
 use super::shadow_map::{draw_casters, transparent};
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
@@ -121,19 +122,9 @@ impl RunPasses for CascadedShadowMaps {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fb));
             gl.viewport(0, 0, map.size, map.size);
             gl.clear(glow::DEPTH_BUFFER_BIT);
-            gl.enable(glow::DEPTH_TEST);
-            gl.depth_func(glow::LESS);
-            gl.depth_mask(true);
-            // What lies nearer the light than the box still casts (clamped).
-            gl.enable(glow::DEPTH_CLAMP);
-            if s.slope_bias > 0.0 {
-                gl.enable(glow::POLYGON_OFFSET_FILL);
-                gl.polygon_offset(s.slope_bias, 0.0);
-            }
-            if s.cull_front {
-                gl.enable(glow::CULL_FACE);
-                gl.cull_face(glow::FRONT);
-            }
+            // shadow_map.rs's depth-pass state: what lies nearer the light
+            // than the box still casts (clamped).
+            depth_pass::set(gl, &s);
             let program = &self.flat;
             program.use_program();
             program.set_mat4("u_light_view_projection", vp);
@@ -141,13 +132,7 @@ impl RunPasses for CascadedShadowMaps {
 
             // Restore the state this pass changed.
             gl.use_program(None);
-            gl.cull_face(glow::BACK);
-            gl.disable(glow::CULL_FACE);
-            gl.polygon_offset(0.0, 0.0);
-            gl.disable(glow::POLYGON_OFFSET_FILL);
-            gl.disable(glow::DEPTH_CLAMP);
-            gl.disable(glow::DEPTH_TEST);
-            gl.front_face(glow::CCW);
+            depth_pass::restore(gl);
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
         }
     }

@@ -28,6 +28,7 @@
 //! depth clamp, no polygon offset, no culling, GL_BACK, GL_CCW, and no
 //! texture or sampler on unit DIFFUSE_TEXTURE (unit 0 active).
 
+use super::depth_pass;
 use crate::frame::lights::FrameLights;
 use crate::frame::pass::{ALL_FACES, CUBE_FACES};
 use crate::frame::plan::Pass;
@@ -177,24 +178,9 @@ impl RunPasses for ShadowMap {
         unsafe {
             // 1. Render depth from the light: the map is the depth buffer.
             gl.viewport(0, 0, map.size, map.size);
-            gl.enable(glow::DEPTH_TEST);
-            gl.depth_func(glow::LESS);
-            gl.depth_mask(true);
-            // A caster nearer the light than the near plane still casts:
-            // its depth is clamped to the near plane instead of clipped.
-            gl.enable(glow::DEPTH_CLAMP);
-            // Acne (notes 01 §8.5.1): push each stored depth away from the
-            // light by slope_bias x its slope (glPolygonOffset(factor, units)).
-            if s.slope_bias > 0.0 {
-                gl.enable(glow::POLYGON_OFFSET_FILL);
-                gl.polygon_offset(s.slope_bias, 0.0);
-            }
-            // Store the faces turned away from the light: the depth that is
-            // compared lies on the far side of each caster.
-            if s.cull_front {
-                gl.enable(glow::CULL_FACE);
-                gl.cull_face(glow::FRONT);
-            }
+            // Depth test and writes, depth clamp, slope-scaled offset (notes
+            // 01 §8.5.1), front-face culling: depth_pass.rs.
+            depth_pass::set(gl, &s);
 
             let program = match (caster.cube, s.cube) {
                 (false, _) => &self.flat,
@@ -231,13 +217,7 @@ impl RunPasses for ShadowMap {
 
             // Restore the state this pass changed.
             gl.use_program(None);
-            gl.cull_face(glow::BACK);
-            gl.disable(glow::CULL_FACE);
-            gl.polygon_offset(0.0, 0.0);
-            gl.disable(glow::POLYGON_OFFSET_FILL);
-            gl.disable(glow::DEPTH_CLAMP);
-            gl.disable(glow::DEPTH_TEST);
-            gl.front_face(glow::CCW);
+            depth_pass::restore(gl);
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
         }
     }

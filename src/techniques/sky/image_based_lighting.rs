@@ -30,6 +30,7 @@ use crate::frame::image_based_lighting::{IblMaps, wanted};
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::targets::TargetDesc;
+use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::cube_map::CubeMap;
 use crate::gl::program::Program;
@@ -160,13 +161,13 @@ unsafe fn attach(
     }
 }
 
-/// The environment on unit 0 for `p` (in use), filtered across faces.
+/// The environment on unit::IBL_SOURCE for `p` (in use), filtered across faces.
 unsafe fn bind_environment(gl: &glow::Context, p: &Program, cube: &CubeMap) {
-    p.set_i32("u_environment", 0);
+    p.set_i32("u_environment", unit::IBL_SOURCE as i32);
     p.set_mat4("u_mvp", &Mat4::IDENTITY);
     unsafe {
         gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
-        gl.active_texture(glow::TEXTURE0);
+        gl.active_texture(glow::TEXTURE0 + unit::IBL_SOURCE);
         gl.bind_texture(glow::TEXTURE_CUBE_MAP, Some(cube.id));
     }
 }

@@ -34,6 +34,7 @@ use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
 use crate::frame::targets::TargetDesc;
+use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
 use crate::scene::Scene;
@@ -219,8 +220,8 @@ impl Mirror {
             p.set_vec3("u_color", color);
             p.set_bool("u_output_srgb", u.output_srgb);
             p.set_bool("u_has_roughness", texture.is_some());
-            p.set_i32("u_roughness", 0);
-            gl.active_texture(glow::TEXTURE0);
+            p.set_i32("u_roughness", unit::MIRROR_ROUGHNESS as i32);
+            gl.active_texture(glow::TEXTURE0 + unit::MIRROR_ROUGHNESS);
             gl.bind_texture(glow::TEXTURE_2D, texture.map(|t| f.draws.textures[t].id));
             f.draws.mesh(d).draw();
             gl.bind_texture(glow::TEXTURE_2D, None);

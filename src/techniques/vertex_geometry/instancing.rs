@@ -40,7 +40,7 @@ use crate::gl::mesh::Mesh;
 use crate::gl::program::Program;
 use crate::scene::instancing::Instancing;
 use crate::scene::{LightKind, Scene, knobs};
-use anyhow::{Result, anyhow};
+use anyhow::Result;
 use glam::{Mat4, Vec3};
 use glow::HasContext;
 use std::cell::{Cell, RefCell};
@@ -152,10 +152,7 @@ fn make_field(gl: &Gl, of: &Instancing) -> Result<Field> {
     let bytes: &[u8] = bytemuck_mat4(&models);
     unsafe {
         // 2. The instanced array's buffer.
-        let instances = gl
-            .create_buffer()
-            .map_err(|e| anyhow!("glGenBuffers: {e}"))?;
-        live::made(Kind::Buffer);
+        let instances = live::new_buffer(gl)?;
         gl.bind_buffer(glow::ARRAY_BUFFER, Some(instances));
         gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, bytes, glow::STATIC_DRAW);
         // 3. A mat4 attribute: four vec4 columns, each advancing per instance.

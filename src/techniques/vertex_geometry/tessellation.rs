@@ -31,7 +31,7 @@ use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
 use crate::frame::targets::TargetDesc;
-use crate::frame::uniforms::LIGHTS_BINDING;
+use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::Gl;
 use crate::gl::program::Program;
@@ -215,9 +215,9 @@ impl RunPasses for Tessellation {
             p.set_vec3("u_ambient", f.scene.render.ambient);
             p.set_i32("u_light_count", u.light_count);
             p.set_bool("u_output_srgb", u.output_srgb);
-            gl.active_texture(glow::TEXTURE0);
+            gl.active_texture(glow::TEXTURE0 + unit::TERRAIN_HEIGHT);
             gl.bind_texture(glow::TEXTURE_2D, Some(map.id));
-            p.set_i32("u_height", 0);
+            p.set_i32("u_height", unit::TERRAIN_HEIGHT as i32);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, LIGHTS_BINDING, Some(u.lights_ubo));
             corners.draw(glow::PATCHES, *count);
 

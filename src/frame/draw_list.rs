@@ -76,8 +76,7 @@ pub struct DrawItem {
     pub depth_func: Option<DepthFunc>,
     /// The material's face culling (notes 01 §3.4).
     pub cull: Cull,
-    /// The centre of the mesh's bounding box, in its own space (the
-    /// transparency pass sorts by the view depth of `model * centre`).
+    /// The mesh's box centre in its own space (the transparency pass sorts by `model * centre`'s depth).
     pub centre: Vec3,
     /// Index into `DrawList::skins` for a skinned object.
     pub skin: Option<usize>,

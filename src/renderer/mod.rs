@@ -55,8 +55,7 @@ pub struct Renderer {
     targets: Targets,
     draws: DrawList,
     lights_ubo: Buffer,
-    /// Every light, for the passes that read more than the block holds
-    /// (tiled shading, the far field): written with the block.
+    /// Every light, for the passes that read more than the block holds (tiled, far field).
     lights_texture: TextureBuffer,
     meshes: FrameMeshes,
     /// The casting lights' depth maps (none when no light casts).
@@ -66,9 +65,8 @@ pub struct Renderer {
     max_lights: usize,
     /// The programs of each registered technique the plan uses, by registry index.
     techniques: Vec<Option<Box<dyn RunPasses>>>,
-    /// The lighting variant the specialised techniques are built for, which
-    /// techniques those are, and their instances built for other variants
-    /// (a settings change and back builds nothing again).
+    /// The lighting variant the specialised techniques are built for, which those are, and
+    /// their instances for other variants (a settings change and back builds nothing again).
     variant: LightingVariant,
     specialised: Vec<bool>,
     variant_cache: HashMap<(usize, LightingVariant), Box<dyn RunPasses>>,

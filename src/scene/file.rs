@@ -379,8 +379,7 @@ pub(super) struct ObjectFile {
     pub(super) mirror: Option<MirrorFile>,
     /// A skinned glTF mesh: how its vertices follow the joints.
     pub(super) skinning: Option<super::settings::SkinMethod>,
-    /// A skinned glTF mesh: the animation that poses it (default: the
-    /// file's first; "none": the rest pose).
+    /// A skinned glTF mesh: the animation that poses it (default: the file's first; "none": rest).
     pub(super) clip: Option<String>,
     /// Static lighting (notes 01 §8.2): bake the scene's lights into a
     /// light map over the mesh's uvs when the scene loads.

@@ -365,6 +365,10 @@ pub static SWITCHES: &[(&Knob, AppliesTo)] = &[
     (&SHOW_NORMALS, |s| s.opaque_objects() > 0),
     (&AREA_LIGHTS, |s| !s.area_lights.is_empty()),
     (&EXPLODE, |s| s.opaque_objects() > 0),
+    (&PARALLAX, |s| {
+        s.materials.iter().any(|m| m.height_map.is_some())
+    }),
+    (&SKINNING_ON, |s| !s.skinned_objects().is_empty()),
 ];
 
 fn index<T: PartialEq + Copy>(all: &[T], v: T) -> usize {

@@ -169,3 +169,54 @@ fn the_demo_key_reader_reads_one_arm() {
     let three = KNOB_KEYS.iter().find(|k| k.key == "3").unwrap();
     assert_eq!(three.effect, KeyEffect::Choose(2));
 }
+
+/// Whether `t` adds a pass to (or orders) a frame of `scene`, as the demo's
+/// panel sees it (src/demo/panel/mod.rs `technique_section`).
+fn in_frame(t: &gloss::frame::Technique, scene: &gloss::scene::Scene) -> bool {
+    let lights = gloss::frame::lights::FrameLights::new(scene);
+    !(t.passes)(scene, &lights).is_empty() || t.order.is_some_and(|o| o(scene, &lights).is_some())
+}
+
+/// The render knobs the demo's panel shows for `scene` in its Techniques
+/// section: the path, the knobs of every technique in the frame, and the
+/// switches (`knobs::SWITCHES`) of techniques switched off.
+fn panel_knobs(scene: &gloss::scene::Scene) -> Vec<&'static str> {
+    let mut shown = vec![knobs::PATH.key];
+    for t in gloss::techniques::ALL.iter().filter(|t| in_frame(t, scene)) {
+        shown.extend(t.knobs.iter().map(|k| k.key));
+    }
+    for (k, applies) in knobs::SWITCHES {
+        if applies(scene) {
+            shown.push(k.key);
+        }
+    }
+    shown
+}
+
+/// A student who switches a technique off in the panel can switch it on
+/// again there: for every technique, on its own scene, every setting that
+/// takes it out of the frame leaves that setting's knob in the panel.
+#[test]
+fn every_switch_that_takes_a_technique_out_stays_in_the_panel() {
+    let mut missing = Vec::new();
+    for t in gloss::techniques::ALL {
+        let scene = Request::parse(t.scene)
+            .and_then(|r| r.load())
+            .unwrap_or_else(|e| panic!("{}: {}: {e:#}", t.name, t.scene));
+        for (knob, _, off) in switches(t, &scene) {
+            for v in off {
+                let mut other = scene.clone();
+                (knob.set)(&mut other.render, v);
+                if !panel_knobs(&other).contains(&knob.key) {
+                    missing.push(format!("{} ({}): {} = {v:?}", t.name, t.scene, knob.key));
+                }
+            }
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "switched off by these, the technique leaves the panel with its switch \
+         (add it to knobs::SWITCHES):\n  {}",
+        missing.join("\n  ")
+    );
+}

@@ -12,6 +12,7 @@ mod input;
 mod layout;
 mod pictures;
 mod probe;
+mod strip;
 mod student;
 mod switches;
 mod techniques;

@@ -49,7 +49,8 @@ fn the_view_beside_the_panel_is_the_scene_at_the_views_size() {
 fn render_scale_a_quarter_shows_each_rendered_pixel_as_a_block() {
     let script = r#"
         start --window 1280x720 default
-        key F2; key F2; key F12; shot 1
+        # A pause after each key: on a loaded machine a frame can take a second.
+        key F2; sleep 1; key F2; sleep 2; key F12; shot 1
         quit
     "#;
     let Some((dir, log)) = drive("gloss-window-scale", "1280x720x24", script) else {

@@ -136,7 +136,8 @@ fn a_click_in_the_view_probes_the_pixel_gloss_probe_reads() {
     }
     // The second click lands in the ball's shadow on the floor.
     assert!(
-        probes[1].contains(": in shadow ("),
+        probes[1].contains(": in shadow at the centre texel")
+            && probes[1].contains("visibility 0.0000"),
         "the ball's shadow:\n{}",
         probes[1]
     );

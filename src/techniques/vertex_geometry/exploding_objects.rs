@@ -28,6 +28,7 @@
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::environment::Environment;
+use crate::frame::forward_pass;
 use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
@@ -131,30 +132,17 @@ impl RunPasses for ExplodingObjects {
                 gl.stencil_func(glow::EQUAL, region.into(), 0xff);
                 gl.stencil_op(glow::KEEP, glow::KEEP, glow::KEEP);
             }
-            if f.view.clips() {
-                gl.enable(glow::CLIP_DISTANCE0);
-            }
             if settings.wireframe {
                 gl.polygon_mode(glow::FRONT_AND_BACK, glow::LINE);
             }
-            for i in 0..f.scene.clip_planes.len() as u32 {
-                gl.enable(glow::CLIP_DISTANCE1 + i);
-            }
+            forward_pass::enable_clip_distances(f);
 
-            // shader.use(); the lesson's uniform: time (and gloss's magnitude).
-            p.use_program();
+            // shader.use() with forward's uniforms, for its fragment shader;
+            // then the lesson's uniform: time (and gloss's magnitude).
+            forward_pass::use_with_frame_uniforms(f, p);
+            p.set_i32("u_light_map", unit::LIGHT_MAP as i32);
             p.set_f32("u_time", f.scene.animation.time);
             p.set_f32("u_magnitude", settings.explode_magnitude);
-            // Forward's uniforms, for its fragment shader.
-            p.set_mat4("u_view_projection", &u.view_projection);
-            p.set_vec3("u_eye", u.eye);
-            p.set_vec3("u_ambient", settings.ambient);
-            p.set_i32("u_light_count", u.light_count);
-            p.set_bool("u_output_srgb", u.output_srgb);
-            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
-            p.set_i32("u_light_map", unit::LIGHT_MAP as i32);
             gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
             f.draws.environment.bind(gl, p);
             image_based_lighting::bind(gl, p, f.draws.environment.ibl.as_ref());
@@ -192,10 +180,7 @@ impl RunPasses for ExplodingObjects {
 
             // Restore the state this pass changed.
             gl.polygon_mode(glow::FRONT_AND_BACK, glow::FILL);
-            gl.disable(glow::CLIP_DISTANCE0);
-            for i in 0..f.scene.clip_planes.len() as u32 {
-                gl.disable(glow::CLIP_DISTANCE1 + i);
-            }
+            forward_pass::disable_clip_distances(f);
             gl.stencil_func(glow::ALWAYS, 0, 0xff);
             gl.disable(glow::STENCIL_TEST);
             gl.front_face(glow::CCW);

@@ -9,6 +9,7 @@
 #include "common/environment.glsl"
 #include "common/image_based_lighting.glsl"
 #include "lighting/ltc_area_lights.glsl"
+#include "lighting/area_light_reference.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -57,8 +58,13 @@ void main() {
         c += lit * surface_shade(u_lights[i], v_position, N, V, kd, ks, r);
     }
 #endif
-    // Area lights by linearly transformed cosines (lighting/ltc_area_lights.rs).
-    c += ltc_area_lights(v_position, N, V, kd, ks, r);
+    // Area lights by linearly transformed cosines (lighting/ltc_area_lights.rs),
+    // or by the quadrature they are measured against (render.area_light_reference).
+    if (u_area_light_reference == 0) {
+        c += ltc_area_lights(v_position, N, V, kd, ks, r);
+    } else {
+        c += area_light_reference(v_position, N, V, kd, ks, r);
+    }
     c += environment_reflection(u_reflectivity, N, V);   // notes 03, Implementation
     frag_color = output_color(c);
 }

@@ -10,7 +10,7 @@ use crate::gl::Gl;
 use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture, set_sampling};
 use crate::lighting::ltc::{LTC_SIZE, ltc_1, ltc_2};
-use crate::scene::area_lights::MAX_AREA_LIGHTS;
+use crate::scene::area_lights::{AreaLightReference, MAX_AREA_LIGHTS};
 use crate::scene::{RenderPath, Scene, Shading};
 use anyhow::{Result, bail};
 use glow::{HasContext, PixelUnpackData};
@@ -95,6 +95,12 @@ pub fn bind(gl: &glow::Context, p: &Program, scene: &Scene, tables: Option<&LtcT
     };
     let lights = &scene.area_lights[..scene.area_lights.len().min(MAX_AREA_LIGHTS)];
     p.set_i32("u_area_light_count", lights.len() as i32);
+    // LTC (0), or the reference by quadrature (glsl/lighting/area_light_reference.glsl).
+    let r = &scene.render;
+    p.set_i32("u_area_light_reference", reference_mode(r.area_light_reference));
+    if r.area_light_reference != AreaLightReference::Off {
+        p.set_i32("u_area_light_points", r.area_light_points as i32);
+    }
     for (i, l) in lights.iter().enumerate() {
         for (k, c) in l.corners().iter().enumerate() {
             p.set_vec3(&format!("u_area_corners[{}]", 4 * i + k), *c);
@@ -108,6 +114,16 @@ pub fn bind(gl: &glow::Context, p: &Program, scene: &Scene, tables: Option<&LtcT
         gl.active_texture(glow::TEXTURE0 + unit::LTC_2);
         gl.bind_texture(glow::TEXTURE_2D, Some(t.ltc_2.id));
         gl.active_texture(glow::TEXTURE0);
+    }
+}
+
+/// The shader's `u_area_light_reference`: 0 LTC, 1 the quadrature with the
+/// exact Fresnel, 2 with the table's Schlick-average Fresnel.
+fn reference_mode(r: AreaLightReference) -> i32 {
+    match r {
+        AreaLightReference::Off => 0,
+        AreaLightReference::Exact => 1,
+        AreaLightReference::TableFresnel => 2,
     }
 }
 

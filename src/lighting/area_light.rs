@@ -164,6 +164,25 @@ pub fn monte_carlo_specular(
     })
 }
 
+/// Any integrand over the light: the integral of `f(w)` dw over the solid
+/// angle `light` covers from `p` (w the unit direction to a point of it,
+/// the light's lit side toward `p`), by the same jittered samples over its
+/// area. The reference for the GPU's quadrature of gloss's BRDF
+/// (glsl/lighting/area_light_reference.glsl) with any lobe: Phong's, or the
+/// microfacet BRDF with another Fresnel. Returns the estimate and its
+/// standard error.
+pub fn monte_carlo_solid_angle(
+    p: DVec3,
+    light: &QuadLight,
+    strata: u32,
+    seed: u64,
+    f: impl Fn(DVec3) -> f64,
+) -> (f64, f64) {
+    jittered_over_quad(p, light, strata, seed, |w, r2, cos_l| {
+        if cos_l > 0.0 { f(w) * cos_l / r2 } else { 0.0 }
+    })
+}
+
 /// The mean and standard error of `f(w, r^2, max(0, -n_l . w)) area` at
 /// `strata` x `strata` jittered points over `light` seen from `p` (w the
 /// unit direction to the point, r its distance): the one estimator both

@@ -25,6 +25,26 @@ use serde::Deserialize;
 /// The most area lights a scene may have (the shader's uniform arrays).
 pub const MAX_AREA_LIGHTS: usize = 8;
 
+/// `render.area_light_points`: N, each triangle of a light cut into N x N
+/// (glsl/lighting/area_light_reference.glsl); 256 is 131 072 points a light.
+pub const REFERENCE_POINTS: std::ops::RangeInclusive<u32> = 1..=256;
+
+super::settings::setting! {
+    /// `render.area_light_reference`: how the forward pass shades the area
+    /// lights. LTC, or the reference LTC is measured against: gloss's own
+    /// BRDF integrated over each light by quadrature
+    /// (glsl/lighting/area_light_reference.glsl), slow on purpose.
+    pub enum AreaLightReference {
+        /// Linearly transformed cosines (glsl/lighting/ltc_area_lights.glsl).
+        Off = "off",
+        /// The quadrature with gloss's exact dielectric Fresnel per point.
+        Exact = "exact",
+        /// The quadrature with F = 1 per point, times the LTC table's one
+        /// Schlick-average Fresnel: what LTC would give with a perfect fit.
+        TableFresnel = "table_fresnel",
+    }
+}
+
 #[derive(Deserialize, Debug, Clone, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct AreaLightFile {

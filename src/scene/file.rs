@@ -3,6 +3,7 @@
 //! values and turns them into a `Scene`.
 
 use super::billboards::{BillboardFieldFile, BillboardFile};
+use super::light_grid::LightGrid;
 use super::mirrors::MirrorFile;
 use super::settings::{
     Accumulation, AlphaTest, BillboardMode, Cull, DeferredLights, DepthFunc, Falloff, MirrorOrder,
@@ -164,6 +165,8 @@ pub(super) struct RenderFile {
     /// Image-based lighting as the ambient term (src/frame/image_based_lighting.rs).
     pub(super) ibl: bool,
     pub(super) area_lights: bool,
+    pub(super) area_light_reference: super::area_lights::AreaLightReference,
+    pub(super) area_light_points: u32,
     pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
     pub(super) gbuffer: super::settings::GBufferNormals,
     pub(super) hardware_srgb: bool,
@@ -225,6 +228,8 @@ impl Default for RenderFile {
             sky_first: false,
             ibl: false,
             area_lights: true,
+            area_light_reference: super::area_lights::AreaLightReference::Off,
+            area_light_points: 32,
             gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
             gbuffer: super::settings::GBufferNormals::Rgba16f,
             hardware_srgb: true,
@@ -260,10 +265,10 @@ pub(super) struct LightFile {
 fn white() -> [f32; 3] {
     [1.0, 1.0, 1.0]
 }
-fn one() -> f32 {
+pub(super) fn one() -> f32 {
     1.0
 }
-fn default_attenuation() -> [f32; 3] {
+pub(super) fn default_attenuation() -> [f32; 3] {
     [1.0, 0.09, 0.032]
 }
 fn spot_inner() -> f32 {
@@ -271,29 +276,6 @@ fn spot_inner() -> f32 {
 }
 fn spot_outer() -> f32 {
     30.0
-}
-
-/// `[light_grid]`: many point lights placed by a seeded generator (the
-/// notes' 256-light example). The scene keeps it, so the demo can edit it.
-#[derive(Deserialize, Debug, Clone, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct LightGrid {
-    pub count: usize,
-    #[serde(default = "one_u64")]
-    pub seed: u64,
-    /// [xmin, xmax, zmin, zmax]
-    pub area: [f32; 4],
-    /// [lowest, highest]
-    pub height: [f32; 2],
-    #[serde(default = "one")]
-    pub intensity: f32,
-    /// [Kc, Kl, Kq]
-    #[serde(default = "default_attenuation")]
-    pub attenuation: [f32; 3],
-}
-
-fn one_u64() -> u64 {
-    1
 }
 
 #[derive(Deserialize, Debug)]

@@ -2,9 +2,33 @@
 //! 256-light example), the same lights for the same seed everywhere.
 
 use super::checks::{finite, non_negative};
-use super::{Light, LightGrid, LightKind, Scene, validate_attenuation};
+use super::{Light, LightKind, Scene, validate_attenuation};
 use anyhow::{Result, anyhow, bail};
 use glam::Vec3;
+use serde::Deserialize;
+
+/// `[light_grid]`: many point lights placed by a seeded generator (the
+/// notes' 256-light example). The scene keeps it, so the demo can edit it.
+#[derive(Deserialize, Debug, Clone, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct LightGrid {
+    pub count: usize,
+    #[serde(default = "one_u64")]
+    pub seed: u64,
+    /// [xmin, xmax, zmin, zmax]
+    pub area: [f32; 4],
+    /// [lowest, highest]
+    pub height: [f32; 2],
+    #[serde(default = "super::file::one")]
+    pub intensity: f32,
+    /// [Kc, Kl, Kq]
+    #[serde(default = "super::file::default_attenuation")]
+    pub attenuation: [f32; 3],
+}
+
+fn one_u64() -> u64 {
+    1
+}
 
 /// Check a light grid as the loader does; errors name the key.
 pub(super) fn check(g: &LightGrid) -> Result<()> {

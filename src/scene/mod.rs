@@ -57,7 +57,7 @@ mod warnings;
 
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
 pub use billboards::{Billboard, BillboardFieldFile, BillboardFile, MAX_BILLBOARDS};
-pub use file::LightGrid;
+pub use light_grid::LightGrid;
 pub use light_maps::{LightMapSettings, MAX_LIGHT_MAP};
 pub use lights::validate_attenuation;
 pub use material::Material;

@@ -210,6 +210,19 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         sky_first: r.sky_first,
         ibl: r.ibl,
         area_lights: r.area_lights,
+        area_light_reference: r.area_light_reference,
+        area_light_points: {
+            let range = super::area_lights::REFERENCE_POINTS;
+            if !range.contains(&r.area_light_points) {
+                bail!(
+                    "render.area_light_points: expected {}..={} (N x N points per triangle of a light), found {}",
+                    range.start(),
+                    range.end(),
+                    r.area_light_points
+                );
+            }
+            r.area_light_points
+        },
         ambient_occlusion: super::ambient_occlusion::resolve(f.ambient_occlusion.as_ref())?,
         gbuffer_encoding: r.gbuffer_encoding,
         gbuffer: r.gbuffer,
@@ -344,6 +357,11 @@ pub struct RenderSettings {
     pub ibl: bool,
     /// Shade and draw the `[[area_lights]]` (LTC, lighting/ltc_area_lights.rs).
     pub area_lights: bool,
+    /// LTC, or the quadrature reference it is measured against
+    /// (glsl/lighting/area_light_reference.glsl), with N x N points per
+    /// triangle of each light (`area_light_points`).
+    pub area_light_reference: super::area_lights::AreaLightReference,
+    pub area_light_points: u32,
     /// `[ambient_occlusion]`: SSAO on the G-buffer paths (notes 03, Ambient
     /// Light; src/scene/ambient_occlusion.rs). None: the ambient term unoccluded.
     pub ambient_occlusion: Option<super::ambient_occlusion::AmbientOcclusion>,

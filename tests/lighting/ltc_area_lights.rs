@@ -18,14 +18,14 @@ use gloss::renderer::Output;
 use gloss::scene::{RenderPath, Scene, Shading};
 use std::f64::consts::PI;
 
-const SIZE: u32 = 96;
-const EYE: [f32; 3] = [0.0, 4.0, 0.0];
-const KD: f64 = 0.5;
-const RADIANCE: f32 = 2.0;
+pub(super) const SIZE: u32 = 96;
+pub(super) const EYE: [f32; 3] = [0.0, 4.0, 0.0];
+pub(super) const KD: f64 = 0.5;
+pub(super) const RADIANCE: f32 = 2.0;
 
 /// A 2 x 2 plane (tilted `tilt` degrees about x) filling the image of an
 /// orthographic camera above it, lit by one area light and nothing else.
-fn lit_plane(light: &str, material: &str, tilt: f32) -> Scene {
+pub(super) fn lit_plane(light: &str, material: &str, tilt: f32) -> Scene {
     let text = format!(
         "name = \"t\"\n[camera]\nprojection = \"orthographic\"\neye = {EYE:?}\n\
          target = [0.0, 0.0, 0.0]\nup = [0.0, 0.0, -1.0]\nhalf_height = 1.0\nnear = 1.0\nfar = 10.0\n\
@@ -54,7 +54,7 @@ fn surface_at(scene: &Scene, x: u32, y: u32) -> Option<(DVec3, DVec3)> {
 }
 
 /// Every sampled pixel's red channel, with its point, normal and eye direction.
-fn pixels(scene: &Scene) -> Vec<(u32, u32, f64, DVec3, DVec3, DVec3)> {
+pub(super) fn pixels(scene: &Scene) -> Vec<(u32, u32, f64, DVec3, DVec3, DVec3)> {
     let r = common::render(scene, Output::Linear32F);
     let mut out = Vec::new();
     for y in (2..SIZE).step_by(7) {
@@ -74,7 +74,7 @@ fn pixels(scene: &Scene) -> Vec<(u32, u32, f64, DVec3, DVec3, DVec3)> {
 const MATTE: &str = "specular = [0.0, 0.0, 0.0]";
 
 /// A 0.8 x 0.6 light beside the plane (outside the image), facing -x.
-fn beside(bottom: f32) -> String {
+pub(super) fn beside(bottom: f32) -> String {
     let centre = bottom + 0.3;
     format!("center = [1.5, {centre}, 0.1]\nsize = [0.8, 0.6]\nnormal = [-1.0, 0.0, 0.0]")
 }

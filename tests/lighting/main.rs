@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod area_light_reference;
 mod bump_mapping;
 mod forward;
 mod gouraud;

@@ -3,6 +3,7 @@
 //! shading's grid and far field; the G-buffer's material encoding.
 
 use super::{Kind, Knob, Value, index};
+use crate::scene::area_lights::AreaLightReference;
 use crate::scene::settings::{
     Accumulation, DeferredLights, Falloff, GBufferEncoding, GBufferNormals,
 };
@@ -176,6 +177,32 @@ pub static AREA_LIGHTS: Knob = Knob {
     set: |r, v| {
         if let Value::Bool(b) = v {
             r.area_lights = b;
+        }
+    },
+};
+
+pub static AREA_LIGHT_REFERENCE: Knob = Knob {
+    key: "render.area_light_reference",
+    label: "area lights' reference",
+    help: "off: LTC; exact: the reference LTC is measured against, gloss's own BRDF integrated over each light by quadrature (slow on purpose); table_fresnel: the same with the LTC table's Schlick-average Fresnel",
+    kind: Kind::Choice(AreaLightReference::WORDS),
+    get: |r| Value::Choice(index(AreaLightReference::ALL, r.area_light_reference)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.area_light_reference = AreaLightReference::ALL[i];
+        }
+    },
+};
+
+pub static AREA_LIGHT_POINTS: Knob = Knob {
+    key: "render.area_light_points",
+    label: "reference points N",
+    help: "the area lights' reference: each triangle of a light (clipped to the horizon) cut into N x N, gloss's BRDF taken at each centre",
+    kind: Kind::Count { min: 1, max: 256 },
+    get: |r| Value::Count(r.area_light_points),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.area_light_points = n;
         }
     },
 };

@@ -44,6 +44,7 @@ use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::geometry::{MeshData, Vertex};
 use crate::gl::mesh::Mesh;
 use crate::gl::program::Program;
+use crate::scene::area_lights::AreaLightReference;
 use crate::scene::{Scene, knobs};
 use anyhow::Result;
 use glow::HasContext;
@@ -54,12 +55,17 @@ pub const LTC_AREA_LIGHTS: Technique = Technique {
     file: file!(),
     shaders: &[
         "lighting/ltc_area_lights.glsl",
+        "lighting/area_light_reference.glsl",
         "lighting/ltc_area_lights.vert",
         "lighting/ltc_area_lights.frag",
     ],
     scene: "scenes/area-lights.toml",
     docs: "docs/lighting/ltc_area_lights.md",
-    knobs: &[&knobs::AREA_LIGHTS],
+    knobs: &[
+        &knobs::AREA_LIGHTS,
+        &knobs::AREA_LIGHT_REFERENCE,
+        &knobs::AREA_LIGHT_POINTS,
+    ],
     passes,
     targets,
     create,
@@ -72,8 +78,18 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
         return vec![];
     }
     let n = scene.area_lights.len();
+    let r = &scene.render;
+    let shaded = match r.area_light_reference {
+        AreaLightReference::Off => "by LTC".to_string(),
+        reference => {
+            let points = r.area_light_points;
+            format!(
+                "by the {reference} reference: gloss's BRDF at {points} x {points} points a triangle of each light"
+            )
+        }
+    };
     let draws = format!(
-        "{n} area lights x 2 triangles, each its radiance (the forward pass shaded the world with them by LTC)"
+        "{n} area lights x 2 triangles, each its radiance (the forward pass shaded the world with them {shaded})"
     );
     vec![Pass::new(
         "area lights",

@@ -97,7 +97,10 @@ pub fn bind(gl: &glow::Context, p: &Program, scene: &Scene, tables: Option<&LtcT
     p.set_i32("u_area_light_count", lights.len() as i32);
     // LTC (0), or the reference by quadrature (glsl/lighting/area_light_reference.glsl).
     let r = &scene.render;
-    p.set_i32("u_area_light_reference", reference_mode(r.area_light_reference));
+    p.set_i32(
+        "u_area_light_reference",
+        reference_mode(r.area_light_reference),
+    );
     if r.area_light_reference != AreaLightReference::Off {
         p.set_i32("u_area_light_points", r.area_light_points as i32);
     }

@@ -36,7 +36,9 @@ enum Lobe {
 fn material(lobe: Lobe) -> String {
     match lobe {
         Lobe::Microfacet(a) => format!("model = \"microfacet\"\nalpha = {a}\neta = {ETA}"),
-        Lobe::Phong(s) => format!("specular = [{KS_PHONG}, {KS_PHONG}, {KS_PHONG}]\nshininess = {s}"),
+        Lobe::Phong(s) => {
+            format!("specular = [{KS_PHONG}, {KS_PHONG}, {KS_PHONG}]\nshininess = {s}")
+        }
     }
 }
 
@@ -110,54 +112,109 @@ fn facing(quad: QuadLight, p: DVec3, two_sided: bool) -> QuadLight {
 }
 
 /// Every other sampled pixel of the reference against the CPU: returns the
-/// worst error in standard errors beyond 0.5 % of the value, and the sum of
-/// the values.
-fn against_monte_carlo(light: &str, lobe: Lobe, tilt: f32, two_sided: bool) -> (f64, f64) {
+/// worst relative error, the worst error in standard errors, and the sum
+/// of the values.
+fn against_monte_carlo(light: &str, lobe: Lobe, tilt: f32, two_sided: bool) -> (f64, f64, f64) {
     let light = format!("{light}\ntwo_sided = {two_sided}");
     let scene = reference_plane(&light, lobe, tilt, AreaLightReference::Exact, 32);
     let quad = QuadLight::of(&scene.area_lights[0]);
-    let (mut worst, mut total) = (0.0f64, 0.0);
+    let (mut worst_rel, mut worst_se, mut total) = (0.0f64, 0.0f64, 0.0);
     for (x, y, got, p, n, v) in pixels(&scene) {
         if (x + y) % 2 != 0 {
             continue;
         }
         let q = facing(quad, p, two_sided);
         let (want, se) = cpu_pixel(p, n, v, &q, lobe, None, u64::from(x * 131 + y));
-        // The quadrature's own error (N = 32, below 0.3 % measured, see the
-        // convergence test), f32 and the 16-bit float target: 0.5 %; the
-        // Monte Carlo's: 4 standard errors.
-        let excess = ((got - want).abs() - 5e-3 * want - 1e-6).max(0.0) / se.max(1e-12);
-        worst = worst.max(excess);
+        let err = (got - want).abs();
+        if want > 1e-4 {
+            worst_rel = worst_rel.max(err / want);
+        }
+        worst_se = worst_se.max(err / se.max(1e-12));
+        // The quadrature's own error (N = 32: below 0.02 % of the peak, the
+        // convergence test), f32 and the 16-bit float target: 0.05 %
+        // (measured at most 0.019 %); the Monte Carlo's: 4 standard errors
+        // (of independent samples; the jittered ones err far less).
         assert!(
-            (got - want).abs() <= 5e-3 * want + 4.0 * se + 1e-6,
+            err <= 5e-4 * want + 4.0 * se + 1e-6,
             "{light}, {lobe:?}, tilt {tilt}: pixel ({x}, {y}) is {got}, Monte Carlo says {want} +- {se}"
         );
         total += want;
     }
-    (worst, total)
+    (worst_rel, worst_se, total)
 }
 
 #[test]
 fn the_reference_is_glosss_brdf_integrated_per_pixel() {
     let cases: [(&str, String, Lobe, f32, bool); 8] = [
-        ("head-on, smooth", beside(0.2), Lobe::Microfacet(0.1), 0.0, false),
-        ("head-on, rough", beside(0.2), Lobe::Microfacet(0.5), 0.0, false),
-        ("grazing, smooth", ABOVE.into(), Lobe::Microfacet(0.1), 72.0, false),
-        ("grazing, rough", ABOVE.into(), Lobe::Microfacet(0.5), 72.0, false),
-        ("straddling the horizon", beside(-0.3), Lobe::Microfacet(0.3), 0.0, false),
+        (
+            "head-on, smooth",
+            beside(0.2),
+            Lobe::Microfacet(0.1),
+            0.0,
+            false,
+        ),
+        (
+            "head-on, rough",
+            beside(0.2),
+            Lobe::Microfacet(0.5),
+            0.0,
+            false,
+        ),
+        (
+            "grazing, smooth",
+            ABOVE.into(),
+            Lobe::Microfacet(0.1),
+            72.0,
+            false,
+        ),
+        (
+            "grazing, rough",
+            ABOVE.into(),
+            Lobe::Microfacet(0.5),
+            72.0,
+            false,
+        ),
+        (
+            "straddling the horizon",
+            beside(-0.3),
+            Lobe::Microfacet(0.3),
+            0.0,
+            false,
+        ),
         ("Phong's lobe", beside(0.2), Lobe::Phong(32.0), 0.0, false),
-        ("Phong's lobe, grazing", ABOVE.into(), Lobe::Phong(8.0), 72.0, false),
-        ("seen from behind, two-sided", AWAY.into(), Lobe::Microfacet(0.2), 0.0, true),
+        (
+            "Phong's lobe, grazing",
+            ABOVE.into(),
+            Lobe::Phong(8.0),
+            72.0,
+            false,
+        ),
+        (
+            "seen from behind, two-sided",
+            AWAY.into(),
+            Lobe::Microfacet(0.2),
+            0.0,
+            true,
+        ),
     ];
     for (what, light, lobe, tilt, two_sided) in cases {
-        let (worst, total) = against_monte_carlo(&light, lobe, tilt, two_sided);
-        eprintln!("{what}: worst {worst:.2} standard errors beyond 0.5 %");
+        let (rel, se, total) = against_monte_carlo(&light, lobe, tilt, two_sided);
+        eprintln!(
+            "{what}: worst {:.3} % of the value, {se:.2} standard errors",
+            100.0 * rel
+        );
         assert!(total > 0.05, "{what}: lit {total}");
     }
     // Nothing from a light behind the surface or a one-sided light seen
     // from behind: exactly 0, as gloss's BRDF gives.
     for (what, light) in [("behind the surface", BELOW), ("seen from behind", AWAY)] {
-        let scene = reference_plane(light, Lobe::Microfacet(0.3), 0.0, AreaLightReference::Exact, 32);
+        let scene = reference_plane(
+            light,
+            Lobe::Microfacet(0.3),
+            0.0,
+            AreaLightReference::Exact,
+            32,
+        );
         for (x, y, got, ..) in pixels(&scene) {
             assert_eq!(got, 0.0, "{what}: pixel ({x}, {y})");
         }
@@ -173,7 +230,11 @@ fn n_against_2n(light: &str, lobe: Lobe, tilt: f32, n: u32) -> f64 {
     };
     let (a, b) = (image(n), image(2 * n));
     let peak = b.iter().step_by(4).fold(0.0f32, |m, &x| m.max(x));
-    let diff = a.iter().zip(&b).step_by(4).fold(0.0f32, |m, (x, y)| m.max((x - y).abs()));
+    let diff = a
+        .iter()
+        .zip(&b)
+        .step_by(4)
+        .fold(0.0f32, |m, (x, y)| m.max((x - y).abs()));
     assert!(peak > 0.01, "{light}: peak {peak}");
     f64::from(diff / peak)
 }
@@ -181,19 +242,36 @@ fn n_against_2n(light: &str, lobe: Lobe, tilt: f32, n: u32) -> f64 {
 #[test]
 fn the_reference_converges_n_against_2n() {
     // The midpoint rule's error falls as 1 / N^2: at the default N = 32
-    // against 64, every pixel of the hard cases within 0.3 % of the
-    // brightest; N = 8 against 16 is far coarser (the test would see a
-    // quadrature that does not converge).
+    // against 64, every pixel of the hard cases within 0.05 % of the
+    // brightest (measured 0.004-0.013 %), and 8 times closer than N = 8
+    // against 16 (measured 15-16 times: 4^2).
     for (what, light, lobe, tilt) in [
-        ("smooth, grazing", ABOVE.to_string(), Lobe::Microfacet(0.1), 72.0),
-        ("straddling the horizon", beside(-0.3), Lobe::Microfacet(0.3), 0.0),
+        (
+            "smooth, grazing",
+            ABOVE.to_string(),
+            Lobe::Microfacet(0.1),
+            72.0,
+        ),
+        (
+            "straddling the horizon",
+            beside(-0.3),
+            Lobe::Microfacet(0.3),
+            0.0,
+        ),
         ("Phong", beside(0.2), Lobe::Phong(32.0), 0.0),
     ] {
         let fine = n_against_2n(&light, lobe, tilt, 32);
         let coarse = n_against_2n(&light, lobe, tilt, 8);
-        eprintln!("{what}: N 32 against 64: {:.4} %, N 8 against 16: {:.4} %", 100.0 * fine, 100.0 * coarse);
-        assert!(fine < 3e-3, "{what}: N = 32 against 64 differ by {fine} of the peak");
-        assert!(fine < coarse, "{what}: {fine} against {coarse}");
+        eprintln!(
+            "{what}: N 32 against 64: {:.4} %, N 8 against 16: {:.4} %",
+            100.0 * fine,
+            100.0 * coarse
+        );
+        assert!(
+            fine < 5e-4,
+            "{what}: N = 32 against 64 differ by {fine} of the peak"
+        );
+        assert!(fine < coarse / 8.0, "{what}: {fine} against {coarse}");
     }
 }
 
@@ -203,7 +281,13 @@ fn the_table_fresnel_variant_is_the_f_one_lobe_times_the_tables_average() {
     // times F0 magnitude + (1 - F0) fresnel over magnitude from the table,
     // read as src/lighting/ltc.rs reads it.
     let lobe = Lobe::Microfacet(0.3);
-    let scene = reference_plane(&beside(0.2), lobe, 0.0, AreaLightReference::TableFresnel, 32);
+    let scene = reference_plane(
+        &beside(0.2),
+        lobe,
+        0.0,
+        AreaLightReference::TableFresnel,
+        32,
+    );
     let quad = QuadLight::of(&scene.area_lights[0]);
     let f0 = ltc::f0(ETA);
     for (x, y, got, p, n, v) in pixels(&scene) {
@@ -224,14 +308,19 @@ fn the_table_fresnel_variant_is_the_f_one_lobe_times_the_tables_average() {
         let scene = reference_plane(&beside(0.2), Lobe::Phong(32.0), 0.0, mode, 16);
         common::render(&scene, Output::Linear32F).linear
     };
-    assert_eq!(phong(AreaLightReference::TableFresnel), phong(AreaLightReference::Exact));
+    assert_eq!(
+        phong(AreaLightReference::TableFresnel),
+        phong(AreaLightReference::Exact)
+    );
 }
 
 #[test]
 fn bad_reference_keys_are_errors_that_name_the_key() {
     let path = common::root().join("scenes/t.toml");
     let with = |keys: &str| {
-        format!("name = \"t\"\n[camera]\neye = [0.0, 1.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\n[render]\n{keys}\n")
+        format!(
+            "name = \"t\"\n[camera]\neye = [0.0, 1.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\n[render]\n{keys}\n"
+        )
     };
     for (keys, says) in [
         (
@@ -247,7 +336,13 @@ fn bad_reference_keys_are_errors_that_name_the_key() {
         let e = format!("{:#}", Scene::parse(&with(keys), &path).unwrap_err());
         assert!(e.contains(says), "{keys}: {e}");
     }
-    let ok = Scene::parse(&with("area_light_reference = \"exact\"\narea_light_points = 64"), &path);
+    let ok = Scene::parse(
+        &with("area_light_reference = \"exact\"\narea_light_points = 64"),
+        &path,
+    );
     let r = ok.unwrap().render;
-    assert_eq!((r.area_light_reference, r.area_light_points), (AreaLightReference::Exact, 64));
+    assert_eq!(
+        (r.area_light_reference, r.area_light_points),
+        (AreaLightReference::Exact, 64)
+    );
 }

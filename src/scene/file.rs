@@ -265,10 +265,10 @@ pub(super) struct LightFile {
 fn white() -> [f32; 3] {
     [1.0, 1.0, 1.0]
 }
-pub(super) fn one() -> f32 {
+fn one() -> f32 {
     1.0
 }
-pub(super) fn default_attenuation() -> [f32; 3] {
+fn default_attenuation() -> [f32; 3] {
     [1.0, 0.09, 0.032]
 }
 fn spot_inner() -> f32 {

@@ -19,15 +19,22 @@ pub struct LightGrid {
     pub area: [f32; 4],
     /// [lowest, highest]
     pub height: [f32; 2],
-    #[serde(default = "super::file::one")]
+    #[serde(default = "one")]
     pub intensity: f32,
     /// [Kc, Kl, Kq]
-    #[serde(default = "super::file::default_attenuation")]
+    #[serde(default = "notes_attenuation")]
     pub attenuation: [f32; 3],
 }
 
 fn one_u64() -> u64 {
     1
+}
+fn one() -> f32 {
+    1.0
+}
+/// Notes 04's [Kc, Kl, Kq], as a `[[lights]]` entry's default.
+fn notes_attenuation() -> [f32; 3] {
+    [1.0, 0.09, 0.032]
 }
 
 /// Check a light grid as the loader does; errors name the key.

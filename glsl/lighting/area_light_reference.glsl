@@ -23,7 +23,7 @@
 // 2. The polygon (at most 5 corners) cut into a fan of triangles; each
 //    triangle cut into N x N equal triangles (N the knob), the integrand
 //    taken at their centroids and weighted by their area (the midpoint rule:
-//    error O(1 / N^2), 2N x 2N points per quad at the least).
+//    error O(1 / N^2); 2 N^2 points for a rectangle wholly above the horizon).
 //
 // table_fresnel (mode 2) takes F = 1 at every point and multiplies by the
 // table's F0 magnitude + (1 - F0) fresnel over its magnitude: the one

@@ -90,7 +90,7 @@ fn cpu_pixel(
     seed: u64,
 ) -> (f64, f64) {
     let l_e = f64::from(RADIANCE);
-    let diffuse = f64::from(KD) * l_e * polygon_irradiance(p, n, quad) / PI;
+    let diffuse = KD * l_e * polygon_irradiance(p, n, quad) / PI;
     let (spec, se) = monte_carlo_solid_angle(p, quad, 160, seed, |w| {
         lobe_at(lobe, w, v, n, fresnel.is_some())
     });

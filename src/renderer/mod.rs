@@ -57,6 +57,8 @@ pub struct Renderer {
     lights_ubo: Buffer,
     /// Every light, for the passes that read more than the block holds (tiled, far field).
     lights_texture: TextureBuffer,
+    /// The lights as packed halves, when the variant reads them (src/frame/light_halves.rs).
+    lights_halves: TextureBuffer,
     meshes: FrameMeshes,
     /// The casting lights' depth maps (none when no light casts).
     shadows: ShadowMaps,
@@ -133,6 +135,7 @@ impl Renderer {
             glow::DYNAMIC_DRAW,
         )?;
         let lights_texture = TextureBuffer::new(gl, glow::RGBA32F)?;
+        let lights_halves = TextureBuffer::new(gl, glow::RGBA32UI)?;
         let mut techniques = Vec::new();
         techniques.resize_with(techniques::ALL.len(), || None);
         let mut r = Renderer {
@@ -148,6 +151,7 @@ impl Renderer {
             draws: DrawList::new(gl, scene)?,
             lights_ubo,
             lights_texture,
+            lights_halves,
             meshes: FrameMeshes::new(gl)?,
             shadows: ShadowMaps::new(gl, scene, max_lights)?,
             sources: sources.clone(),
@@ -264,6 +268,10 @@ impl Renderer {
             self.lights_ubo.write(&bytes[..n]);
         }
         self.lights_texture.write(&bytes);
+        // check_lights_fit has seen that every value fits.
+        let halves = crate::frame::light_halves::pack_scene(&self.scene, &bytes).unwrap_or_default();
+        let halves: Vec<u8> = halves.iter().flat_map(|w| w.to_ne_bytes()).collect();
+        self.lights_halves.write(&halves);
     }
 
     /// Reallocate the targets at a new size (nothing happens for the same
@@ -322,7 +330,10 @@ impl Renderer {
             far: camera.far,
             light_count: self.scene.lights.len().min(self.max_lights) as i32,
             lights_ubo: self.lights_ubo.id,
-            lights_texture: self.lights_texture.texture,
+            lights_texture: match self.variant.light_halves {
+                0 => self.lights_texture.texture,
+                _ => self.lights_halves.texture,
+            },
             output_srgb: srgb,
             output_encoded: encoded,
             viewport: [x, y, w, h],

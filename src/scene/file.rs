@@ -132,6 +132,8 @@ pub(super) struct RenderFile {
     pub(super) specialize: bool,
     /// Lights from the uniform block when they fit (src/frame/variant.rs; off: llvmpipe measured no gain).
     pub(super) light_block: bool,
+    /// Texture, block or packed halves (src/frame/light_halves.rs).
+    pub(super) light_data: super::settings::LightData,
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
     pub(super) msaa: u32,
@@ -200,6 +202,7 @@ impl Default for RenderFile {
             sort_opaque: true,
             specialize: true,
             light_block: false,
+            light_data: super::settings::LightData::Texture,
             post_chain: super::settings::ChainForm::PingPong,
             msaa: 1,
             frustum_culling: true,

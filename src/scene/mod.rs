@@ -67,7 +67,8 @@ pub use settings::Parallax;
 pub use settings::Transparency;
 pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, Cull, DeferredLights, DepthFunc,
-    Falloff, JointStorage, MirrorOrder, RenderPath, Shading, SkinMethod, SkinningOn, Winding,
+    Falloff, JointStorage, LightData, MirrorOrder, RenderPath, Shading, SkinMethod, SkinningOn,
+    Winding,
 };
 pub use shadows::{CascadeSplit, CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;

@@ -18,6 +18,8 @@
 //! (subnormals included). A value a half cannot hold (over 65504) is an
 //! error that names the light and the field, never a silent infinity.
 
+use crate::gl::Gl;
+use crate::gl::texture_buffer::TextureBuffer;
 use crate::scene::{LightData, RenderPath, Scene};
 use half::f16;
 
@@ -92,7 +94,11 @@ pub fn pack(floats: &[f32], code: i32, file: &str) -> anyhow::Result<Vec<u32>> {
             if !f16::from_f32(v).is_finite() {
                 anyhow::bail!(
                     "{file}: render.light_data = \"{}\": light {i}'s {} is {v}, more than a half float holds (65504); use \"texture\"",
-                    if code == code::HALVES { "halves" } else { "halves_float_position" },
+                    if code == code::HALVES {
+                        "halves"
+                    } else {
+                        "halves_float_position"
+                    },
                     FIELDS[k]
                 );
             }
@@ -123,6 +129,52 @@ pub fn pack_scene(scene: &Scene, float_bytes: &[u8]) -> anyhow::Result<Vec<u32>>
     pack(&floats, c, &scene.path.display().to_string())
 }
 
+/// The buffer textures the lights go in: RGBA32F for the floats, RGBA32UI
+/// for the halves (a `usamplerBuffer` reads only integer texels), made the
+/// first time a frame reads halves.
+pub struct LightTextures {
+    gl: Gl,
+    floats: TextureBuffer,
+    halves: Option<TextureBuffer>,
+}
+
+impl LightTextures {
+    pub fn new(gl: &Gl) -> anyhow::Result<LightTextures> {
+        Ok(LightTextures {
+            gl: gl.clone(),
+            floats: TextureBuffer::new(gl, glow::RGBA32F)?,
+            halves: None,
+        })
+    }
+
+    /// Upload `scene`'s lights (`FrameLights::pack`'s bytes), and their
+    /// halves when its frame reads those (`Err` when a value does not fit
+    /// in a half; `check_lights_fit` has said so before).
+    pub fn write(&mut self, scene: &Scene, float_bytes: &[u8]) -> anyhow::Result<()> {
+        self.floats.write(float_bytes);
+        if code(scene) == code::NONE {
+            return Ok(());
+        }
+        let words = pack_scene(scene, float_bytes)?;
+        let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_ne_bytes()).collect();
+        if self.halves.is_none() {
+            self.halves = Some(TextureBuffer::new(&self.gl, glow::RGBA32UI)?);
+        }
+        if let Some(h) = &self.halves {
+            h.write(&bytes);
+        }
+        Ok(())
+    }
+
+    /// The texture a variant with `light_halves` = `code` reads.
+    pub fn texture(&self, code: i32) -> glow::Texture {
+        match (&self.halves, code) {
+            (Some(h), code::HALVES | code::FLOAT_POSITION) => h.texture,
+            _ => self.floats.texture,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -136,7 +188,10 @@ mod tests {
         assert_eq!(h[0], 0x3400 | (0x3a00 << 16));
         let p = pack(&l, code::FLOAT_POSITION, "t").unwrap();
         assert_eq!(p.len(), 12);
-        assert_eq!(&p[..3], &[0.25f32.to_bits(), 0.75f32.to_bits(), 1.25f32.to_bits()]);
+        assert_eq!(
+            &p[..3],
+            &[0.25f32.to_bits(), 0.75f32.to_bits(), 1.25f32.to_bits()]
+        );
         assert_eq!(p[3], pack2(1.75, 2.25));
         assert_eq!(p[9], pack2(7.75, 0.0));
         assert_eq!(&p[10..], &[0, 0]);
@@ -147,7 +202,10 @@ mod tests {
         let mut l = vec![0.0f32; 32];
         l[16 + 9] = 70000.0;
         let e = pack(&l, code::HALVES, "s.toml").unwrap_err().to_string();
-        assert!(e.contains("light 1's colour x intensity (green) is 70000"), "{e}");
+        assert!(
+            e.contains("light 1's colour x intensity (green) is 70000"),
+            "{e}"
+        );
         // Position past a half is fine when positions stay floats.
         l[9 + 16] = 1.0;
         l[0] = 1.0e6;

@@ -18,6 +18,7 @@
 //! map drops seven), the normal maps and the G-buffer's material encoding.
 
 use crate::frame::gbuffer;
+use crate::frame::light_halves;
 use crate::frame::lights::FrameLights;
 use crate::frame::shadows;
 use crate::scene::shadows::Pcf;
@@ -88,7 +89,7 @@ impl LightingVariant {
         normal_maps: true,
         gbuffer_material: -1,
         light_block: false,
-        light_halves: 0,
+        light_halves: light_halves::code::NONE,
         gbuffer_octahedral: false,
     };
 
@@ -128,9 +129,9 @@ impl LightingVariant {
             light_block: (scene.render.light_block || scene.render.light_data == LightData::Block)
                 && scene.lights.len() <= crate::frame::lights::LIGHTS_ON_EVERY_GL,
             light_halves: if scene.render.light_block {
-                0
+                light_halves::code::NONE
             } else {
-                crate::frame::light_halves::code(scene)
+                light_halves::code(scene)
             },
             gbuffer_octahedral: gbuffer::octahedral(scene),
         }
@@ -235,8 +236,10 @@ impl LightingVariant {
             extra.push_str(", lights from the uniform block");
         }
         match self.light_halves {
-            1 => extra.push_str(", lights as halves (2 texels a light)"),
-            2 => extra.push_str(", lights as halves, positions float (3 texels a light)"),
+            light_halves::code::HALVES => extra.push_str(", lights as halves (2 texels a light)"),
+            light_halves::code::FLOAT_POSITION => {
+                extra.push_str(", lights as halves, positions float (3 texels a light)")
+            }
             _ => {}
         }
         if self.gbuffer_octahedral {

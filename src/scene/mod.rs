@@ -26,6 +26,7 @@ pub mod gltf_objects;
 pub mod hierarchy;
 pub mod instancing;
 pub mod knobs;
+mod light_data;
 mod light_grid;
 mod light_maps;
 mod lights;
@@ -58,6 +59,7 @@ mod warnings;
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
 pub use billboards::{Billboard, BillboardFieldFile, BillboardFile, MAX_BILLBOARDS};
 pub use file::LightGrid;
+pub use light_data::LightData;
 pub use light_maps::{LightMapSettings, MAX_LIGHT_MAP};
 pub use lights::validate_attenuation;
 pub use material::Material;
@@ -67,8 +69,7 @@ pub use settings::Parallax;
 pub use settings::Transparency;
 pub use settings::{
     Accumulation, AlphaTest, BillboardKind, BillboardMode, Cull, DeferredLights, DepthFunc,
-    Falloff, JointStorage, LightData, MirrorOrder, RenderPath, Shading, SkinMethod, SkinningOn,
-    Winding,
+    Falloff, JointStorage, MirrorOrder, RenderPath, Shading, SkinMethod, SkinningOn, Winding,
 };
 pub use shadows::{CascadeSplit, CubeRender, Pcf, Shadow, ShadowFit};
 pub use text::MAX_MESSAGE_CHARS;

@@ -132,7 +132,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         specialize: r.specialize,
         light_block: r.light_block,
         light_data: {
-            use super::settings::LightData;
+            use super::light_data::LightData;
             if r.light_block && !matches!(r.light_data, LightData::Texture | LightData::Block) {
                 bail!(
                     "render.light_block = true asks for the uniform block, render.light_data = \"{}\" for another form: give one (light_block is the older name of light_data = \"block\")",
@@ -299,7 +299,7 @@ pub struct RenderSettings {
     /// Where tiled shading and the far field read the lights: a buffer
     /// texture of floats, the uniform block (as `light_block`), or packed
     /// halves (src/frame/light_halves.rs). With `specialize` only.
-    pub light_data: super::settings::LightData,
+    pub light_data: super::light_data::LightData,
     /// How the post chain passes its image along (src/scene/post.rs).
     pub post_chain: super::post::ChainForm,
     /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4

@@ -96,7 +96,11 @@ fn on_the_gpu(ctx: &gloss::gl::Headless, words: &[u32]) -> Vec<[f32; 2]> {
         gl.draw_arrays(glow::POINTS, 0, words.len() as i32);
         gl.end_transform_feedback();
         gl.disable(glow::RASTERIZER_DISCARD);
-        assert_eq!(gl.get_error(), glow::NO_ERROR, "the capture raised a GL error");
+        assert_eq!(
+            gl.get_error(),
+            glow::NO_ERROR,
+            "the capture raised a GL error"
+        );
         let mut out = vec![0u8; bytes];
         gl.get_buffer_sub_data(glow::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
         gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, None);
@@ -155,7 +159,10 @@ fn the_glsl_decodes_halves_as_the_half_crate() {
         .collect();
     let got = on_the_gpu(&ctx, &words);
     for (i, v) in got.iter().enumerate() {
-        for (k, h) in [halves[i], halves[(i + 1) % halves.len()]].iter().enumerate() {
+        for (k, h) in [halves[i], halves[(i + 1) % halves.len()]]
+            .iter()
+            .enumerate()
+        {
             let want = f16::from_bits(*h).to_f32();
             assert_eq!(
                 v[k].to_bits(),
@@ -180,15 +187,29 @@ fn tiled(name: &str, form: LightData) -> Scene {
     s
 }
 
-/// What the halves cost against the float form, in 8-bit sRGB steps: the
-/// largest change of a pixel measured on these scenes (see the test's
-/// output) was 1/255; one step more is the bound.
+/// What the halves cost against the float form, in 8-bit sRGB steps, where
+/// no light is cut off (the far field; the mixed lights, whose radii reach
+/// past the view): the largest change of a pixel measured was 1/255; one
+/// step more is the bound.
 const HALF_BOUND: f64 = 2.0 / 255.0;
+
+/// With a cutoff (many-lights.toml on the tiled path, 5/256), a light's
+/// contribution jumps at its radius, and a position or radius rounded to a
+/// half moves that edge by up to 2^-11 of the radius: a pixel on the edge
+/// flips by the jump (measured: 0.13% of the pixels over 1/255 with every
+/// value a half, 0.06% with float positions, at most 12/255). The bound is
+/// on how many pixels change and on the error against forward, which must
+/// stay that of the floats.
+const EDGE_FRACTION: f64 = 0.003;
 
 #[test]
 fn tiled_shading_and_the_far_field_draw_the_halves_as_the_floats() {
     let ctx = common::context(common::backend());
-    for name in ["many-lights.toml", "far-field.toml", "mixed-lights.toml"] {
+    for (name, cut) in [
+        ("many-lights.toml", true),
+        ("far-field.toml", false),
+        ("mixed-lights.toml", false),
+    ] {
         let float = tiled(name, LightData::Texture);
         let mut forward = float.clone();
         forward.render.path = RenderPath::Forward;
@@ -205,15 +226,21 @@ fn tiled_shading_and_the_far_field_draw_the_halves_as_the_floats() {
             let flip_d = flip(&image, &float).unwrap().mean;
             eprintln!(
                 "{name} {form}: against the floats max {:.0}/255 ({:.3}% > 1/255, FLIP {flip_d:.4}); \
-                 against forward max {:.0}/255 (floats {:.0}/255)",
+                 against forward max {:.0}/255, RMSE {:.3}/255 (floats {:.0}/255, {:.3}/255)",
                 d.max_abs * 255.0,
                 d.frac_over * 100.0,
                 h.max_abs * 255.0,
-                f.max_abs * 255.0
+                h.rmse * 255.0,
+                f.max_abs * 255.0,
+                f.rmse * 255.0
             );
-            assert!(d.max_abs <= HALF_BOUND, "{name} {form}: {d:?}");
+            if cut {
+                assert!(d.frac_over <= EDGE_FRACTION, "{name} {form}: {d:?}");
+            } else {
+                assert!(d.max_abs <= HALF_BOUND, "{name} {form}: {d:?}");
+            }
             assert!(
-                h.max_abs <= f.max_abs + HALF_BOUND,
+                h.max_abs <= f.max_abs + HALF_BOUND && h.rmse <= f.rmse + 0.1 / 255.0,
                 "{name} {form} vs forward {h:?}, floats {f:?}"
             );
         }
@@ -224,13 +251,22 @@ fn tiled_shading_and_the_far_field_draw_the_halves_as_the_floats() {
 fn the_plan_names_the_form_and_light_block_with_halves_is_refused() {
     let s = tiled("many-lights.toml", LightData::Halves);
     let plan = gloss::techniques::plan(&s).to_string();
-    assert!(plan.contains("lights as halves (2 texels a light)"), "{plan}");
+    assert!(
+        plan.contains("lights as halves (2 texels a light)"),
+        "{plan}"
+    );
     let s = tiled("many-lights.toml", LightData::HalvesFloatPosition);
     let plan = gloss::techniques::plan(&s).to_string();
-    assert!(plan.contains("positions float (3 texels a light)"), "{plan}");
+    assert!(
+        plan.contains("positions float (3 texels a light)"),
+        "{plan}"
+    );
     // Forward reads the block: no halves there.
     let s = crate::with_path(&s, RenderPath::Forward);
-    assert_eq!(LightingVariant::of(&s, &FrameLights::new(&s)).light_halves, 0);
+    assert_eq!(
+        LightingVariant::of(&s, &FrameLights::new(&s)).light_halves,
+        0
+    );
     let text = std::fs::read_to_string(common::root().join("scenes/many-lights.toml")).unwrap();
     let text = text.replacen(
         "[render]\n",

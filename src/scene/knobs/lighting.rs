@@ -4,8 +4,9 @@
 //! form of the light data tiled shading and the far field read.
 
 use super::{Kind, Knob, Value, index};
+use crate::scene::LightData;
 use crate::scene::settings::{
-    Accumulation, DeferredLights, Falloff, GBufferEncoding, GBufferNormals, LightData,
+    Accumulation, DeferredLights, Falloff, GBufferEncoding, GBufferNormals,
 };
 
 pub static CUTOFF: Knob = Knob {

@@ -75,6 +75,9 @@ pub fn check_lights_fit(
     block_why: &str,
     texels: usize,
 ) -> anyhow::Result<()> {
+    // Packed halves: every value must fit in a half (light_halves.rs).
+    let lights = FrameLights::new(scene);
+    crate::frame::light_halves::pack_scene(scene, &lights.pack(scene))?;
     if !lights_in_buffer_texture(scene) {
         return check_light_count(scene, block_max, block_why);
     }

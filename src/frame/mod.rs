@@ -35,6 +35,7 @@ pub mod environment;
 pub mod forward_pass;
 pub mod gbuffer;
 pub mod image_based_lighting;
+pub mod light_halves;
 pub mod light_maps;
 pub mod lights;
 pub mod ltc_area_lights;

@@ -14,7 +14,8 @@ pub struct FrameUniforms {
     pub far: f32,
     pub light_count: i32,
     pub lights_ubo: glow::Buffer,
-    /// Every light as RGBA32F texels (glsl/common/light_buffer.glsl).
+    /// Every light as RGBA32F texels, or as packed halves in RGBA32UI ones
+    /// when the lighting variant reads those (glsl/common/light_buffer.glsl).
     pub lights_texture: glow::Texture,
     /// The world's target holds sRGB-encoded values (the 8-bit output, with
     /// no post chain) rather than linear light (a post chain's HDR target,

@@ -18,10 +18,11 @@
 //! map drops seven), the normal maps and the G-buffer's material encoding.
 
 use crate::frame::gbuffer;
+use crate::frame::light_halves;
 use crate::frame::lights::FrameLights;
 use crate::frame::shadows;
 use crate::scene::shadows::Pcf;
-use crate::scene::{Falloff, LightKind, Scene};
+use crate::scene::{Falloff, LightData, LightKind, Scene};
 
 /// What one lighting variant evaluates. `GENERAL` is everything.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -61,6 +62,10 @@ pub struct LightingVariant {
     /// uniform block (every light fits in it on every GL, and
     /// `render.light_block` is on) rather than from the buffer texture.
     pub light_block: bool,
+    /// Tiled shading and the far field read the lights as packed halves
+    /// (src/frame/light_halves.rs `code`: 0 none, 1 every value, 2 all but
+    /// the position; `render.light_data`).
+    pub light_halves: i32,
     /// The G-buffer is the packed one (octahedral normal + shininess index,
     /// src/frame/gbuffer.rs `octahedral`).
     pub gbuffer_octahedral: bool,
@@ -84,6 +89,7 @@ impl LightingVariant {
         normal_maps: true,
         gbuffer_material: -1,
         light_block: false,
+        light_halves: light_halves::code::NONE,
         gbuffer_octahedral: false,
     };
 
@@ -120,8 +126,13 @@ impl LightingVariant {
             normal_maps: scene.render.normal_mapping
                 && (scene.objects.iter()).any(|o| scene.materials[o.material].normal_map.is_some()),
             gbuffer_material: material,
-            light_block: scene.render.light_block
+            light_block: (scene.render.light_block || scene.render.light_data == LightData::Block)
                 && scene.lights.len() <= crate::frame::lights::LIGHTS_ON_EVERY_GL,
+            light_halves: if scene.render.light_block {
+                light_halves::code::NONE
+            } else {
+                light_halves::code(scene)
+            },
             gbuffer_octahedral: gbuffer::octahedral(scene),
         }
     }
@@ -153,6 +164,7 @@ impl LightingVariant {
                 self.gbuffer_material.to_string(),
             ),
             ("VARIANT_LIGHT_BLOCK", b(self.light_block)),
+            ("VARIANT_LIGHT_HALVES", self.light_halves.to_string()),
             ("VARIANT_GBUFFER_OCTAHEDRAL", b(self.gbuffer_octahedral)),
         ]
     }
@@ -222,6 +234,13 @@ impl LightingVariant {
         }
         if self.light_block {
             extra.push_str(", lights from the uniform block");
+        }
+        match self.light_halves {
+            light_halves::code::HALVES => extra.push_str(", lights as halves (2 texels a light)"),
+            light_halves::code::FLOAT_POSITION => {
+                extra.push_str(", lights as halves, positions float (3 texels a light)")
+            }
+            _ => {}
         }
         if self.gbuffer_octahedral {
             extra.push_str(", octahedral G-buffer normal");

@@ -19,6 +19,7 @@ pub use probe::{MAGNIFIER_RADIUS, Probe, TargetValue, TileLists};
 pub use {probe_pcf::Filtered, probe_shadow::FACES, probe_shadow::ShadowProbe};
 
 use crate::frame::draw_list::DrawList;
+use crate::frame::light_halves::LightTextures;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_lights_fit, max_lights};
 use crate::frame::meshes::FrameMeshes;
 use crate::frame::plan::{FramePlan, Pass};
@@ -34,7 +35,7 @@ use crate::gl::buffer::Buffer;
 use crate::gl::debug::DebugLog;
 use crate::gl::framebuffer::Framebuffer;
 use crate::gl::program::Sources;
-use crate::gl::texture_buffer::{TextureBuffer, max_texels};
+use crate::gl::texture_buffer::max_texels;
 use crate::gl::{Gl, Headless};
 use crate::lighting;
 use crate::scene::{Camera, RenderSettings, Scene};
@@ -56,7 +57,7 @@ pub struct Renderer {
     draws: DrawList,
     lights_ubo: Buffer,
     /// Every light, for the passes that read more than the block holds (tiled, far field).
-    lights_texture: TextureBuffer,
+    lights_texture: LightTextures,
     meshes: FrameMeshes,
     /// The casting lights' depth maps (none when no light casts).
     shadows: ShadowMaps,
@@ -132,7 +133,7 @@ impl Renderer {
             max_lights * LIGHT_STRIDE,
             glow::DYNAMIC_DRAW,
         )?;
-        let lights_texture = TextureBuffer::new(gl, glow::RGBA32F)?;
+        let lights_texture = LightTextures::new(gl)?;
         let mut techniques = Vec::new();
         techniques.resize_with(techniques::ALL.len(), || None);
         let mut r = Renderer {
@@ -165,7 +166,7 @@ impl Renderer {
         };
         let variant = LightingVariant::of(scene, &r.lights);
         r.build_planned_techniques(variant)?;
-        r.upload_lights();
+        r.upload_lights()?;
         debug.check(gl, "renderer set-up")?;
         Ok(r)
     }
@@ -214,7 +215,7 @@ impl Renderer {
         }
         self.shadows.take_casters(&self.gl, &self.scene)?;
         self.lights = lights;
-        self.upload_lights();
+        self.upload_lights()?;
         self.draws.update_values(&self.scene);
         // render.ibl may add the sky's cube map and image-based lighting's maps, or drop them.
         let environment = &self.draws.environment;
@@ -253,17 +254,16 @@ impl Renderer {
         &self.meshes
     }
 
-    /// Write the scene's lights into the uniform buffer (as many as it
-    /// holds) and all of them into the buffer texture (tiled shading and
-    /// the far field read it: a tiled frame may hold more lights than the
-    /// block). Once per change of the scene's values, not per frame.
-    fn upload_lights(&mut self) {
+    /// Write the scene's lights into the uniform buffer (as many as it holds) and all of them
+    /// into the buffer texture, floats or halves (tiled shading and the far field read it: a
+    /// tiled frame may hold more lights than the block). Once per change of the scene's values.
+    fn upload_lights(&mut self) -> Result<()> {
         let bytes = self.lights.pack(&self.scene);
         let n = bytes.len().min(self.max_lights * LIGHT_STRIDE);
         if n > 0 {
             self.lights_ubo.write(&bytes[..n]);
         }
-        self.lights_texture.write(&bytes);
+        self.lights_texture.write(&self.scene, &bytes)
     }
 
     /// Reallocate the targets at a new size (nothing happens for the same
@@ -322,7 +322,7 @@ impl Renderer {
             far: camera.far,
             light_count: self.scene.lights.len().min(self.max_lights) as i32,
             lights_ubo: self.lights_ubo.id,
-            lights_texture: self.lights_texture.texture,
+            lights_texture: self.lights_texture.texture(self.variant.light_halves),
             output_srgb: srgb,
             output_encoded: encoded,
             viewport: [x, y, w, h],

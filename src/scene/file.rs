@@ -131,8 +131,10 @@ pub(super) struct RenderFile {
     pub(super) sort_opaque: bool,
     /// Lighting shaders specialised to what the scene holds (src/frame/variant.rs).
     pub(super) specialize: bool,
-    /// Lights from the uniform block when they fit (src/frame/variant.rs; off: llvmpipe measured no gain).
+    /// The older `light_data = "block"` (src/frame/variant.rs).
     pub(super) light_block: bool,
+    /// Texture, block or packed halves (src/frame/light_halves.rs).
+    pub(super) light_data: super::light_data::LightData,
     pub(super) post_chain: super::settings::ChainForm,
     /// Samples per pixel on the forward path (1: no MSAA).
     pub(super) msaa: u32,
@@ -203,6 +205,7 @@ impl Default for RenderFile {
             sort_opaque: true,
             specialize: true,
             light_block: false,
+            light_data: super::light_data::LightData::Texture,
             post_chain: super::settings::ChainForm::PingPong,
             msaa: 1,
             frustum_culling: true,
@@ -316,8 +319,7 @@ pub(super) struct MaterialFile {
     pub(super) cull: Option<Cull>,
     /// Which winding is a front face: "ccw" (the default) or "cw".
     pub(super) winding: Option<super::settings::Winding>,
-    /// How the texture is sampled (src/scene/texturing.rs): the wrap rule
-    /// (one word, or [s, t]), the filter, the anisotropy, and the uv transform.
+    /// How it is sampled (src/scene/texturing.rs): wrap, filter, anisotropy, uv transform.
     pub(super) wrap: Option<toml::Value>,
     pub(super) filter: Option<super::texturing::TextureFilter>,
     pub(super) anisotropy: Option<f32>,
@@ -363,8 +365,7 @@ pub(super) struct ObjectFile {
     pub(super) skinning: Option<super::settings::SkinMethod>,
     /// A skinned glTF mesh: the animation that poses it (default: the file's first; "none": rest).
     pub(super) clip: Option<String>,
-    /// Static lighting (notes 01 §8.2): bake the scene's lights into a
-    /// light map over the mesh's uvs when the scene loads.
+    /// Static lighting (notes 01 §8.2): bake the lights into a light map over the uvs on load.
     pub(super) light_map: Option<LightMapFile>,
 }
 

@@ -24,7 +24,7 @@ pub use instancing::{EXPLODE, EXPLODE_MAGNITUDE, INSTANCING, NORMAL_LENGTH, SHOW
 pub use lighting::{
     ACCUMULATION, AREA_LIGHT_POINTS, AREA_LIGHT_REFERENCE, AREA_LIGHTS, CUTOFF, DEFERRED_LIGHTS,
     DEPTH_SLICES, FALLOFF, FAR_FIELD, FAR_FIELD_SH, GBUFFER_ENCODING, GBUFFER_NORMALS,
-    HARDWARE_SRGB, NEAR_RADIUS, STENCIL_VOLUMES, TILE_SIZE,
+    HARDWARE_SRGB, LIGHT_DATA, NEAR_RADIUS, STENCIL_VOLUMES, TILE_SIZE,
 };
 pub use parallax::{PARALLAX, PARALLAX_LAYERS, PARALLAX_SHADOWS, PARALLAX_UV};
 pub use sky::{IBL, SKY_FIRST};
@@ -245,7 +245,7 @@ pub static SPECIALIZE: Knob = Knob {
 pub static LIGHT_BLOCK: Knob = Knob {
     key: "render.light_block",
     label: "lights from the uniform block",
-    help: "with specialised shaders, tiled shading and the far field read the lights from the uniform block when all of them fit on every GL (256); off (the default: on llvmpipe the two measured the same): from the buffer texture (src/frame/variant.rs)",
+    help: "the older name of render.light_data = \"block\": with specialised shaders, tiled shading and the far field read the lights from the uniform block when all of them fit on every GL (256); off (the default: on llvmpipe the two measured the same): from the buffer texture (src/frame/variant.rs)",
     kind: Kind::Bool,
     get: |r| Value::Bool(r.light_block),
     set: |r, v| {
@@ -324,6 +324,7 @@ pub static ALL: &[&Knob] = &[
     &SORT_OPAQUE,
     &SPECIALIZE,
     &LIGHT_BLOCK,
+    &LIGHT_DATA,
     &FRUSTUM_CULLING,
     &WIREFRAME,
     &OUTLINES,

@@ -26,6 +26,7 @@ pub mod gltf_objects;
 pub mod hierarchy;
 pub mod instancing;
 pub mod knobs;
+mod light_data;
 mod light_grid;
 mod light_maps;
 mod lights;
@@ -57,6 +58,7 @@ mod warnings;
 
 pub use alpha_test::BILLBOARD_ALPHA_TEST;
 pub use billboards::{Billboard, BillboardFieldFile, BillboardFile, MAX_BILLBOARDS};
+pub use light_data::LightData;
 pub use light_grid::LightGrid;
 pub use light_maps::{LightMapSettings, MAX_LIGHT_MAP};
 pub use lights::validate_attenuation;

@@ -131,6 +131,16 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         sort_opaque: r.sort_opaque,
         specialize: r.specialize,
         light_block: r.light_block,
+        light_data: {
+            use super::light_data::LightData;
+            if r.light_block && !matches!(r.light_data, LightData::Texture | LightData::Block) {
+                bail!(
+                    "render.light_block = true asks for the uniform block, render.light_data = \"{}\" for another form: give one (light_block is the older name of light_data = \"block\")",
+                    r.light_data
+                );
+            }
+            r.light_data
+        },
         post_chain: r.post_chain,
         msaa: {
             if !MSAA_SAMPLES.contains(&r.msaa) {
@@ -299,6 +309,10 @@ pub struct RenderSettings {
     /// GL (256), instead of the buffer texture (src/frame/variant.rs). Off
     /// by default: on llvmpipe the two measured the same.
     pub light_block: bool,
+    /// Where tiled shading and the far field read the lights: a buffer
+    /// texture of floats, the uniform block (as `light_block`), or packed
+    /// halves (src/frame/light_halves.rs). With `specialize` only.
+    pub light_data: super::light_data::LightData,
     /// How the post chain passes its image along (src/scene/post.rs).
     pub post_chain: super::post::ChainForm,
     /// Samples per pixel (MSAA) of the world on the forward path: 1, 2, 4

@@ -33,6 +33,7 @@ mod deferred_shading;
 mod far_field;
 mod far_field_sh;
 mod hardware_srgb;
+mod light_halves;
 mod light_volumes;
 mod numeric_edges;
 mod numeric_sweep;

@@ -1,8 +1,10 @@
 //! The knobs of the lighting paths: the light-volume cutoff, the stencil
 //! volumes, the accumulation format, the deferred path's form, and tiled
-//! shading's grid and far field; the G-buffer's material encoding.
+//! shading's grid and far field; the G-buffer's material encoding; the
+//! form of the light data tiled shading and the far field read.
 
 use super::{Kind, Knob, Value, index};
+use crate::scene::LightData;
 use crate::scene::area_lights::AreaLightReference;
 use crate::scene::settings::{
     Accumulation, DeferredLights, Falloff, GBufferEncoding, GBufferNormals,
@@ -229,6 +231,19 @@ pub static HARDWARE_SRGB: Knob = Knob {
     set: |r, v| {
         if let Value::Bool(b) = v {
             r.hardware_srgb = b;
+        }
+    },
+};
+
+pub static LIGHT_DATA: Knob = Knob {
+    key: "render.light_data",
+    label: "light data",
+    help: "with specialised shaders, where tiled shading and the far field read the lights: a buffer texture of floats (4 RGBA32F texels a light), the uniform block (when all fit on every GL: 256), every field as a half float (2 RGBA32UI texels), or the position as floats and the rest halves (3 texels); src/frame/light_halves.rs",
+    kind: Kind::Choice(LightData::WORDS),
+    get: |r| Value::Choice(index(LightData::ALL, r.light_data)),
+    set: |r, v| {
+        if let Value::Choice(i) = v {
+            r.light_data = LightData::ALL[i];
         }
     },
 };

@@ -66,6 +66,7 @@ pub const TILED_SHADING: Technique = Technique {
         &knobs::DEPTH_SLICES,
         &knobs::FAR_FIELD,
         &knobs::LIGHT_BLOCK,
+        &knobs::LIGHT_DATA,
         &knobs::ACCUMULATION,
     ],
     passes,

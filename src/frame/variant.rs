@@ -18,6 +18,7 @@
 //! map drops seven), the normal maps and the G-buffer's material encoding.
 
 use crate::frame::gbuffer;
+use crate::frame::gbuffer_slim;
 use crate::frame::lights::FrameLights;
 use crate::frame::shadows;
 use crate::scene::shadows::Pcf;
@@ -64,6 +65,9 @@ pub struct LightingVariant {
     /// The G-buffer is the packed one (octahedral normal + shininess index,
     /// src/frame/gbuffer.rs `octahedral`).
     pub gbuffer_octahedral: bool,
+    /// The G-buffer has its specular attachment; false: the slim one, whose
+    /// specular colour is a uniform (src/frame/gbuffer_slim.rs).
+    pub gbuffer_specular: bool,
 }
 
 impl LightingVariant {
@@ -85,6 +89,7 @@ impl LightingVariant {
         gbuffer_material: -1,
         light_block: false,
         gbuffer_octahedral: false,
+        gbuffer_specular: true,
     };
 
     /// The parts `scene` needs, or `GENERAL` with `render.specialize` off.
@@ -123,6 +128,7 @@ impl LightingVariant {
             light_block: scene.render.light_block
                 && scene.lights.len() <= crate::frame::lights::LIGHTS_ON_EVERY_GL,
             gbuffer_octahedral: gbuffer::octahedral(scene),
+            gbuffer_specular: gbuffer_slim::constant_specular(scene).is_none(),
         }
     }
 
@@ -154,6 +160,7 @@ impl LightingVariant {
             ),
             ("VARIANT_LIGHT_BLOCK", b(self.light_block)),
             ("VARIANT_GBUFFER_OCTAHEDRAL", b(self.gbuffer_octahedral)),
+            ("VARIANT_GBUFFER_SPECULAR", b(self.gbuffer_specular)),
         ]
     }
 
@@ -225,6 +232,9 @@ impl LightingVariant {
         }
         if self.gbuffer_octahedral {
             extra.push_str(", octahedral G-buffer normal");
+        }
+        if !self.gbuffer_specular {
+            extra.push_str(", specular colour from a uniform (no G-buffer attachment)");
         }
         format!("{types}, {falloff}, {shadows}, {model}{extra}")
     }

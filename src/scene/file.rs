@@ -167,6 +167,8 @@ pub(super) struct RenderFile {
     pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
     pub(super) gbuffer: super::settings::GBufferNormals,
     pub(super) hardware_srgb: bool,
+    /// Leave out a G-buffer attachment every material makes constant (src/frame/gbuffer_slim.rs).
+    pub(super) gbuffer_slim: bool,
 }
 
 impl Default for RenderFile {
@@ -228,6 +230,7 @@ impl Default for RenderFile {
             gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
             gbuffer: super::settings::GBufferNormals::Rgba16f,
             hardware_srgb: true,
+            gbuffer_slim: true,
         }
     }
 }

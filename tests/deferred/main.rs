@@ -39,6 +39,7 @@ mod numeric_sweep;
 mod packed_gbuffer;
 mod shader_variants;
 mod shader_variants_paths;
+mod slim_gbuffer;
 mod stencil_light_volumes;
 mod tiled_shading;
 mod windowed_falloff;

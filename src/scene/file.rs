@@ -167,7 +167,6 @@ pub(super) struct RenderFile {
     pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
     pub(super) gbuffer: super::settings::GBufferNormals,
     pub(super) hardware_srgb: bool,
-    /// Leave out a G-buffer attachment every material makes constant (src/frame/gbuffer_slim.rs).
     pub(super) gbuffer_slim: bool,
 }
 
@@ -337,8 +336,7 @@ pub(super) struct MaterialFile {
     pub(super) cull: Option<Cull>,
     /// Which winding is a front face: "ccw" (the default) or "cw".
     pub(super) winding: Option<super::settings::Winding>,
-    /// How the texture is sampled (src/scene/texturing.rs): the wrap rule
-    /// (one word, or [s, t]), the filter, the anisotropy, and the uv transform.
+    /// Sampling (src/scene/texturing.rs): wrap rule (a word or [s, t]), filter, anisotropy, uv.
     pub(super) wrap: Option<toml::Value>,
     pub(super) filter: Option<super::texturing::TextureFilter>,
     pub(super) anisotropy: Option<f32>,
@@ -384,8 +382,7 @@ pub(super) struct ObjectFile {
     pub(super) skinning: Option<super::settings::SkinMethod>,
     /// A skinned glTF mesh: the animation that poses it (default: the file's first; "none": rest).
     pub(super) clip: Option<String>,
-    /// Static lighting (notes 01 §8.2): bake the scene's lights into a
-    /// light map over the mesh's uvs when the scene loads.
+    /// Static lighting (notes 01 §8.2): the lights baked into a light map over the mesh's uvs.
     pub(super) light_map: Option<LightMapFile>,
 }
 

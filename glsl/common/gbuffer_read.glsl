@@ -4,7 +4,7 @@
 // Units: unit::GBUFFER_* in src/frame/uniforms.rs; layout: src/frame/gbuffer.rs.
 uniform sampler2D u_gbuffer_normal;     // normal.xyz, shininess (or packed: decode_normal_shininess)
 uniform sampler2D u_gbuffer_albedo;     // diffuse albedo (linear)
-uniform sampler2D u_gbuffer_specular;   // specular colour (linear)
+uniform sampler2D u_gbuffer_specular;   // specular colour (linear; none in the slim G-buffer)
 uniform sampler2D u_gbuffer_depth;      // depth: the position is rebuilt from it
 uniform sampler2D u_gbuffer_alpha;      // gAlpha, when u_gbuffer_material is not 0
 uniform sampler2D u_gbuffer_convert;    // gConvert, for the report's encoding
@@ -29,6 +29,16 @@ vec4 decode_normal_shininess(vec4 texel) {
     }
     return texel;
 }
+// The slim G-buffer (render.gbuffer_slim, src/frame/gbuffer_slim.rs): no
+// specular attachment, every material's specular colour is one value,
+// passed as the full G-buffer would give it back.
+uniform bool u_gbuffer_specular_constant;
+uniform vec3 u_gbuffer_specular_value;
+#ifdef VARIANT_GBUFFER_SPECULAR
+#define GBUFFER_SPECULAR_CONSTANT (VARIANT_GBUFFER_SPECULAR == 0)
+#else
+#define GBUFFER_SPECULAR_CONSTANT u_gbuffer_specular_constant
+#endif
 #include "common/gbuffer_material.glsl"
 uniform mat4 u_inverse_view_projection;
 // The view's rectangle in the target (x, y, width, height in pixels): the
@@ -120,7 +130,8 @@ Surface read_gbuffer(vec2 uv) {
     s.N = ns.xyz;
     s.shininess = ns.w;
     s.kd = texture(u_gbuffer_albedo, uv).rgb;
-    s.ks = texture(u_gbuffer_specular, uv).rgb;
+    s.ks = GBUFFER_SPECULAR_CONSTANT ? u_gbuffer_specular_value
+                                     : texture(u_gbuffer_specular, uv).rgb;
     s.P = world_position(uv, s.depth);
     read_reflectance(ivec2(uv * vec2(textureSize(u_gbuffer_normal, 0))), s);
     return s;

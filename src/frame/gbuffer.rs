@@ -162,10 +162,13 @@ pub const NAME: &str = "gbuffer";
 
 /// The full G-buffer, or the thin one of the light pre-pass, with depth in
 /// `depth` (`depth_format`) and the `material_attachments` after the rest;
-/// attachment 0 `OCTAHEDRAL` for the packed G-buffer, else `NORMAL`.
+/// attachment 0 `OCTAHEDRAL` for the packed G-buffer, else `NORMAL`; the
+/// full one without `SPECULAR` when `slim` (src/frame/gbuffer_slim.rs: every
+/// material's specular colour is the same, and no material attachments).
 pub fn target(
     thin: bool,
     octahedral: bool,
+    slim: bool,
     depth: u32,
     material: &[(&'static str, u32)],
 ) -> TargetDesc {
@@ -175,6 +178,8 @@ pub fn target(
         samples: 1,
         colors: if thin {
             [&[normal][..], material].concat()
+        } else if slim {
+            [&[normal, ALBEDO][..], material].concat()
         } else {
             [&[normal, ALBEDO, SPECULAR][..], material].concat()
         },
@@ -230,6 +235,11 @@ pub fn bind_for_reading(
     if packed {
         p.set_vec4_array("u_shininess_table", &frame.shininess_table);
     }
+    // The slim G-buffer (src/frame/gbuffer_slim.rs): albedo but no specular
+    // attachment; every pixel's specular colour is the uniform.
+    let slim = c.len() == 2 && c[1].internal_format == ALBEDO.1;
+    p.set_bool("u_gbuffer_specular_constant", slim);
+    p.set_vec3("u_gbuffer_specular_value", frame.gbuffer_specular);
     p.set_mat4("u_inverse_view_projection", &frame.inverse_view_projection);
     p.set_vec4("u_viewport", glam::IVec4::from(frame.viewport).as_vec4());
     p.set_vec3("u_eye", frame.eye);

@@ -34,6 +34,7 @@ pub mod draw_textures;
 pub mod environment;
 pub mod forward_pass;
 pub mod gbuffer;
+pub mod gbuffer_slim;
 pub mod image_based_lighting;
 pub mod light_halves;
 pub mod light_maps;

@@ -32,6 +32,9 @@ pub struct FrameUniforms {
     /// The packed G-buffer's shininess values, four a vec4
     /// (src/frame/gbuffer.rs `shininess_uniform`).
     pub shininess_table: [glam::Vec4; 16],
+    /// The slim G-buffer's specular colour, as the full one would store it
+    /// (src/frame/gbuffer_slim.rs `constant_specular`; 0 with the full one).
+    pub gbuffer_specular: Vec3,
 }
 
 /// Texture units, named once in src/frame/units.rs.

@@ -18,6 +18,7 @@
 //! map drops seven), the normal maps and the G-buffer's material encoding.
 
 use crate::frame::gbuffer;
+use crate::frame::gbuffer_slim;
 use crate::frame::light_halves;
 use crate::frame::lights::FrameLights;
 use crate::frame::shadows;
@@ -69,6 +70,9 @@ pub struct LightingVariant {
     /// The G-buffer is the packed one (octahedral normal + shininess index,
     /// src/frame/gbuffer.rs `octahedral`).
     pub gbuffer_octahedral: bool,
+    /// The G-buffer has its specular attachment; false: the slim one, whose
+    /// specular colour is a uniform (src/frame/gbuffer_slim.rs).
+    pub gbuffer_specular: bool,
 }
 
 impl LightingVariant {
@@ -91,6 +95,7 @@ impl LightingVariant {
         light_block: false,
         light_halves: light_halves::code::NONE,
         gbuffer_octahedral: false,
+        gbuffer_specular: true,
     };
 
     /// The parts `scene` needs, or `GENERAL` with `render.specialize` off.
@@ -134,6 +139,7 @@ impl LightingVariant {
                 light_halves::code(scene)
             },
             gbuffer_octahedral: gbuffer::octahedral(scene),
+            gbuffer_specular: gbuffer_slim::constant_specular(scene).is_none(),
         }
     }
 
@@ -166,6 +172,7 @@ impl LightingVariant {
             ("VARIANT_LIGHT_BLOCK", b(self.light_block)),
             ("VARIANT_LIGHT_HALVES", self.light_halves.to_string()),
             ("VARIANT_GBUFFER_OCTAHEDRAL", b(self.gbuffer_octahedral)),
+            ("VARIANT_GBUFFER_SPECULAR", b(self.gbuffer_specular)),
         ]
     }
 
@@ -244,6 +251,9 @@ impl LightingVariant {
         }
         if self.gbuffer_octahedral {
             extra.push_str(", octahedral G-buffer normal");
+        }
+        if !self.gbuffer_specular {
+            extra.push_str(", specular colour from a uniform (no G-buffer attachment)");
         }
         format!("{types}, {falloff}, {shadows}, {model}{extra}")
     }

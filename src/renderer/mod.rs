@@ -21,7 +21,6 @@ pub use {probe_pcf::Filtered, probe_shadow::FACES, probe_shadow::ShadowProbe};
 use crate::frame::draw_list::DrawList;
 use crate::frame::light_halves::LightTextures;
 use crate::frame::lights::{FrameLights, LIGHT_STRIDE, MAX_LIGHTS, check_lights_fit, max_lights};
-use crate::frame::meshes::FrameMeshes;
 use crate::frame::plan::{FramePlan, Pass};
 use crate::frame::post::world_image;
 use crate::frame::shadows::ShadowMaps;
@@ -29,14 +28,10 @@ use crate::frame::targets::{OUTPUT, Targets};
 use crate::frame::timing::{PassTimer, PassTimes, timer_queries_trustworthy};
 use crate::frame::uniforms::FrameUniforms;
 use crate::frame::variant::LightingVariant;
-use crate::frame::views::View;
-use crate::frame::{Frame, RunPasses};
-use crate::gl::buffer::Buffer;
-use crate::gl::debug::DebugLog;
-use crate::gl::framebuffer::Framebuffer;
+use crate::frame::{Frame, RunPasses, meshes::FrameMeshes, views::View};
 use crate::gl::program::Sources;
 use crate::gl::texture_buffer::max_texels;
-use crate::gl::{Gl, Headless};
+use crate::gl::{Gl, Headless, buffer::Buffer, debug::DebugLog, framebuffer::Framebuffer};
 use crate::lighting;
 use crate::scene::{Camera, RenderSettings, Scene};
 use crate::techniques;
@@ -71,6 +66,8 @@ pub struct Renderer {
     variant: LightingVariant,
     specialised: Vec<bool>,
     variant_cache: HashMap<(usize, LightingVariant), Box<dyn RunPasses>>,
+    /// The slim G-buffer's specular colour as this GL reads it (frame/gbuffer_slim.rs).
+    gbuffer_specular: glam::Vec3,
     /// Measure each pass with glFinish + the CPU clock.
     pub timing: bool,
     /// With `timing`, also GL_TIMESTAMP queries: on where the driver's timer
@@ -157,6 +154,7 @@ impl Renderer {
             variant: LightingVariant::GENERAL,
             specialised: vec![false; techniques::ALL.len()],
             variant_cache: HashMap::new(),
+            gbuffer_specular: crate::frame::gbuffer_slim::uniform_value(gl, scene)?,
             timing: false,
             gpu_timers: timer_queries_trustworthy(&unsafe {
                 gl.get_parameter_string(glow::RENDERER)
@@ -214,6 +212,7 @@ impl Renderer {
             )?;
         }
         self.shadows.take_casters(&self.gl, &self.scene)?;
+        self.gbuffer_specular = crate::frame::gbuffer_slim::uniform_value(&self.gl, &self.scene)?;
         self.lights = lights;
         self.upload_lights()?;
         self.draws.update_values(&self.scene);
@@ -327,6 +326,7 @@ impl Renderer {
             output_encoded: encoded,
             viewport: [x, y, w, h],
             shininess_table: crate::frame::gbuffer::shininess_uniform(&self.scene),
+            gbuffer_specular: self.gbuffer_specular,
             clear_color: if srgb {
                 bg.map(lighting::srgb_encode)
             } else {

@@ -172,6 +172,7 @@ pub(super) struct RenderFile {
     pub(super) gbuffer_encoding: super::settings::GBufferEncoding,
     pub(super) gbuffer: super::settings::GBufferNormals,
     pub(super) hardware_srgb: bool,
+    pub(super) gbuffer_slim: bool,
 }
 
 impl Default for RenderFile {
@@ -236,6 +237,7 @@ impl Default for RenderFile {
             gbuffer_encoding: super::settings::GBufferEncoding::PlainRgba16f,
             gbuffer: super::settings::GBufferNormals::Rgba16f,
             hardware_srgb: true,
+            gbuffer_slim: true,
         }
     }
 }

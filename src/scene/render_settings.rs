@@ -237,6 +237,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         gbuffer_encoding: r.gbuffer_encoding,
         gbuffer: r.gbuffer,
         hardware_srgb: r.hardware_srgb,
+        gbuffer_slim: r.gbuffer_slim,
     })
 }
 
@@ -387,6 +388,10 @@ pub struct RenderSettings {
     /// GL_FRAMEBUFFER_SRGB on, where the frame allows (src/frame/plan.rs
     /// `hardware_srgb`); false: pow() in the shader, as every other pass.
     pub hardware_srgb: bool,
+    /// Leave the specular attachment out of the G-buffer when every opaque
+    /// material has the same specular colour (src/frame/gbuffer_slim.rs);
+    /// false: always the full G-buffer.
+    pub gbuffer_slim: bool,
 }
 
 impl RenderSettings {

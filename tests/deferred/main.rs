@@ -22,6 +22,10 @@
 //! * tiled shading with the far field: one sample per pixel == forward within
 //!   the deferred bound; one per 4x4 or 8x8 pixels within FAR_BOUND.
 //!
+//! * the slim G-buffer (no specular attachment when every material shares
+//!   one specular colour) draws every path's image byte for byte as the
+//!   full one (slim_gbuffer.rs).
+//!
 //! Every render runs with GL debug output on and fails on any GL error.
 
 #[path = "../common/mod.rs"]
@@ -40,6 +44,7 @@ mod numeric_sweep;
 mod packed_gbuffer;
 mod shader_variants;
 mod shader_variants_paths;
+mod slim_gbuffer;
 mod stencil_light_volumes;
 mod tiled_shading;
 mod windowed_falloff;

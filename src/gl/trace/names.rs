@@ -47,6 +47,7 @@ pub const NAMES: &[(u32, &str, &[&str])] = &[
     (0x0B44, "GL_CULL_FACE", &["GetPName", "EnableCap"]),
     (0x0B71, "GL_DEPTH_TEST", &["GetPName", "EnableCap"]),
     (0x0B90, "GL_STENCIL_TEST", &["GetPName", "EnableCap"]),
+    (0x0BA2, "GL_VIEWPORT", &["GetPName"]),
     (0x0BE2, "GL_BLEND", &["TextureEnvMode", "EnableCap", "GetPName"]),
     (0x0C11, "GL_SCISSOR_TEST", &["GetPName", "EnableCap"]),
     (0x0CF5, "GL_UNPACK_ALIGNMENT", &["PixelStoreParameter", "GetPName"]),

@@ -222,6 +222,19 @@ pub static GBUFFER_NORMALS: Knob = Knob {
     },
 };
 
+pub static GBUFFER_SLIM: Knob = Knob {
+    key: "render.gbuffer_slim",
+    label: "slim G-buffer",
+    help: "leave the specular attachment out of the G-buffer when every opaque material has one specular colour, no specular map, no microfacet lobe and no reflectivity: the lighting passes read the colour from a uniform (4 bytes a pixel fewer); off: always the full G-buffer",
+    kind: Kind::Bool,
+    get: |r| Value::Bool(r.gbuffer_slim),
+    set: |r, v| {
+        if let Value::Bool(b) = v {
+            r.gbuffer_slim = b;
+        }
+    },
+};
+
 pub static HARDWARE_SRGB: Knob = Knob {
     key: "render.hardware_srgb",
     label: "sRGB by the hardware",

@@ -17,6 +17,7 @@
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::gbuffer;
+use crate::frame::gbuffer_slim;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::targets::{Depth, TargetDesc};
@@ -37,7 +38,11 @@ pub const GBUFFER: Technique = Technique {
     shaders: &["deferred/gbuffer.vert", "deferred/gbuffer.frag"],
     scene: "scenes/deferred-shading.toml",
     docs: "docs/deferred/gbuffer.md",
-    knobs: &[&knobs::DEPTH_FUNC, &knobs::GBUFFER_NORMALS],
+    knobs: &[
+        &knobs::DEPTH_FUNC,
+        &knobs::GBUFFER_NORMALS,
+        &knobs::GBUFFER_SLIM,
+    ],
     passes,
     targets,
     create,
@@ -77,10 +82,21 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         Some(true) => "normal + shininess, depth; ",
         _ => "",
     };
+    // The slim G-buffer's missing attachment, or why the full one keeps it.
+    let specular = match (gbuffer_slim::constant_specular(scene), layout(scene)) {
+        (Some(c), _) => format!(
+            "no specular attachment: every material's is ({:.2}, {:.2}, {:.2}); ",
+            c.x, c.y, c.z
+        ),
+        (None, Some(false)) => gbuffer_slim::kept_by(scene)
+            .map(|why| format!("specular attachment kept: {why}; "))
+            .unwrap_or_default(),
+        _ => String::new(),
+    };
     vec![Pass::new(
         "gbuffer",
         gbuffer::NAME,
-        format!("{n} objects ({what}{normal}; {bytes} bytes/px)"),
+        format!("{n} objects ({what}{specular}{normal}; {bytes} bytes/px)"),
         file!(),
     )]
 }
@@ -89,7 +105,8 @@ fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
     let depth = gbuffer::depth_format(scene);
     let material = gbuffer::material_attachments(scene);
     let octahedral = gbuffer::octahedral(scene);
-    (layout(scene).map(|thin| gbuffer::target(thin, octahedral, depth, &material)))
+    let slim = gbuffer_slim::constant_specular(scene).is_some();
+    (layout(scene).map(|thin| gbuffer::target(thin, octahedral, slim, depth, &material)))
         .into_iter()
         .collect()
 }

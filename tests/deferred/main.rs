@@ -22,6 +22,9 @@
 //! * tiled shading with the far field: one sample per pixel == forward within
 //!   the deferred bound; one per 4x4 or 8x8 pixels within FAR_BOUND.
 //!
+//! * area lights (LTC) on every G-buffer path == forward within 2/255 and
+//!   0.05 % of pixels over 1/255 (ltc_area_lights_deferred.rs).
+//!
 //! Every render runs with GL debug output on and fails on any GL error.
 
 #[path = "../common/mod.rs"]
@@ -34,6 +37,7 @@ mod far_field;
 mod far_field_sh;
 mod hardware_srgb;
 mod light_volumes;
+mod ltc_area_lights_deferred;
 mod numeric_edges;
 mod numeric_sweep;
 mod packed_gbuffer;

@@ -39,8 +39,14 @@ const PATHS: &[&[&str]] = &[
     &["render.path=deferred", "render.gbuffer=octahedral"],
     &["render.path=tiled", "render.gbuffer=octahedral"],
     &["render.path=prepass", "render.gbuffer=octahedral"],
-    &["render.path=deferred", "render.gbuffer_encoding=report_rgba8"],
-    &["render.path=prepass", "render.gbuffer_encoding=report_rgba16f"],
+    &[
+        "render.path=deferred",
+        "render.gbuffer_encoding=report_rgba8",
+    ],
+    &[
+        "render.path=prepass",
+        "render.gbuffer_encoding=report_rgba16f",
+    ],
 ];
 
 /// A point light beside the area lights: the lighting pass runs (and
@@ -85,7 +91,10 @@ fn every_gbuffer_path_draws_the_area_lights_as_forward_does() {
             let forward = render(&scene(point_light, &["render.path=forward", &switch]));
             if on {
                 // The lights must matter: forward with them off is far off.
-                let off = scene(point_light, &["render.path=forward", "render.area_lights=false"]);
+                let off = scene(
+                    point_light,
+                    &["render.path=forward", "render.area_lights=false"],
+                );
                 let m = compare("forward on vs off", &forward, &render(&off));
                 assert!(m.max_abs > 0.25 && m.frac_over > 0.5, "{m:?}");
             }
@@ -93,10 +102,7 @@ fn every_gbuffer_path_draws_the_area_lights_as_forward_does() {
                 let mut o = overrides.to_vec();
                 o.push(&switch);
                 let s = scene(point_light, &o);
-                let label = format!(
-                    "{} (point light {point_light}) vs forward",
-                    o.join(" ")
-                );
+                let label = format!("{} (point light {point_light}) vs forward", o.join(" "));
                 let m = compare(&label, &render(&s), &forward);
                 let eight_bit = o.iter().any(|k| k.ends_with("report_rgba8"));
                 let max_abs = if eight_bit { MAX_ABS_8BIT } else { MAX_ABS };
@@ -141,7 +147,10 @@ fn the_plan_lists_the_pass_only_with_area_lights_switched_on() {
         assert!(made < last, "{path}: {on:?}");
         if path != "forward" {
             let shade = on.iter().position(|n| *n == "area lights (LTC)").unwrap();
-            assert!(shade < made, "{path}: shaded before the final image: {on:?}");
+            assert!(
+                shade < made,
+                "{path}: shaded before the final image: {on:?}"
+            );
         }
         assert!(
             !off.iter().any(|n| n.starts_with("area lights")),

@@ -180,8 +180,9 @@ fn other_shadings_say_they_leave_the_lights_out() {
     let scene = common::scene("area-lights.toml");
     let warned = |s: &Scene| {
         let w = s.warnings();
-        w.iter()
-            .any(|w| w.starts_with("area_lights: the 3 area lights") && w.contains("per fragment only"))
+        w.iter().any(|w| {
+            w.starts_with("area_lights: the 3 area lights") && w.contains("per fragment only")
+        })
     };
     assert!(!warned(&scene));
     // Gouraud shading on the forward path leaves them out, and says so.
@@ -189,12 +190,19 @@ fn other_shadings_say_they_leave_the_lights_out() {
     gouraud.render.shading = Shading::Gouraud;
     assert!(warned(&gouraud), "{:?}", gouraud.warnings());
     let plan = gloss::techniques::plan(&gouraud);
-    assert!(plan.passes.iter().all(|p| !p.name.starts_with("area lights")));
+    assert!(
+        plan.passes
+            .iter()
+            .all(|p| !p.name.starts_with("area lights"))
+    );
     // A G-buffer path lights every pixel whatever render.shading says: the
     // area lights are drawn (deferred/ltc_area_lights_deferred.rs), no warning.
     gouraud.render.path = RenderPath::Deferred;
     assert!(
-        gouraud.warnings().iter().all(|w| !w.starts_with("area_lights")),
+        gouraud
+            .warnings()
+            .iter()
+            .all(|w| !w.starts_with("area_lights")),
         "{:?}",
         gouraud.warnings()
     );

@@ -132,7 +132,10 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     Ok(Box::new(LtcAreaLightsDeferred {
         program: p.build(&[
             (glow::VERTEX_SHADER, "common/fullscreen.vert"),
-            (glow::FRAGMENT_SHADER, "deferred/ltc_area_lights_deferred.frag"),
+            (
+                glow::FRAGMENT_SHADER,
+                "deferred/ltc_area_lights_deferred.frag",
+            ),
         ])?,
     }))
 }
@@ -152,7 +155,10 @@ impl LightPrepass {
     pub fn create(p: &Programs) -> Result<LightPrepass> {
         let stages = [
             (glow::VERTEX_SHADER, "common/fullscreen.vert"),
-            (glow::FRAGMENT_SHADER, "deferred/ltc_area_lights_deferred.frag"),
+            (
+                glow::FRAGMENT_SHADER,
+                "deferred/ltc_area_lights_deferred.frag",
+            ),
         ];
         Ok(LightPrepass {
             program: p.build_with(&stages, &[("LIGHT_PREPASS", "1".into())])?,

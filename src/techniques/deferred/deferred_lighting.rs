@@ -5,9 +5,9 @@
 //! 1. A thin G-buffer: normal + shininess and depth only (gbuffer.rs).
 //! 2. The light pre-pass: per light, its volume (light_volumes.rs: the same
 //!    steps, state and meshes), accumulating *diffuse* light and *specular*
-//!    light into two HDR targets.
-//! 2b. The area lights (ltc_area_lights_deferred.rs), when the scene has
-//!    them: their diffuse and specular light added to the same targets.
+//!    light into two HDR targets; then the area lights' diffuse and
+//!    specular light, if the scene has area lights
+//!    (ltc_area_lights_deferred.rs), added to the same targets.
 //! 3. The combine pass: the scene drawn again (the same vertex shader,
 //!    gl_Position invariant) with glDepthFunc(GL_LEQUAL) against the
 //!    G-buffer's depth, copied into the output with glBlitFramebuffer, and no
@@ -122,7 +122,7 @@ struct DeferredLighting {
     combine: Program,
     /// The same, tinting by the cascade (shadow.cascade_colors).
     combine_tinted: Program,
-    /// The area lights' diffuse and specular light (step 2b).
+    /// The area lights' diffuse and specular light (after step 2).
     area_lights: LightPrepass,
 }
 

@@ -1,7 +1,8 @@
 // Area lights with linearly transformed cosines (Heitz, Dupuy, Hill and
 // Neubelt 2016, "Real-Time Polygonal-Light Shading with Linearly
 // Transformed Cosines"; the paper's LTC_Evaluate). Included by
-// lighting/forward.frag; src/frame/ltc_area_lights.rs sets the uniforms and
+// lighting/forward.frag and deferred/ltc_area_lights_deferred.frag (the
+// G-buffer paths); src/frame/ltc_area_lights.rs sets the uniforms and
 // binds the tables, src/lighting/ltc.rs is the CPU twin.
 //
 //   diffuse  = k_d L_e FF(identity)                   the exact polygon integral / pi
@@ -87,23 +88,48 @@ vec2 ltc_evaluate(vec3 N, vec3 V, vec3 P, mat3 Minv, int light, bool two_sided) 
     return two_sided ? abs(ff) : max(ff, vec2(0.0));
 }
 
-// The light every area light gives the surface at P (normal N, toward the eye V).
-vec3 ltc_area_lights(vec3 P, vec3 N, vec3 V, vec3 kd, vec3 ks, Reflectance r) {
-    if (u_area_light_count == 0) return vec3(0.0);
+// Steps 1 and 5's table reads for a surface: M^-1 and the specular
+// term's scale (the BRDF's magnitude and Fresnel).
+void ltc_lookup(vec3 N, vec3 V, Reflectance r, out mat3 Minv, out float scale) {
     float alpha = r.microfacet ? r.alpha : sqrt(2.0 / (r.shininess + 2.0));
     vec2 uv = vec2(sqrt(clamp(alpha, 0.0, 1.0)), sqrt(1.0 - clamp(dot(N, V), 0.0, 1.0)));
     uv = uv * LUT_SCALE + LUT_BIAS;
     vec4 t1 = texture(u_ltc_1, uv);
     vec4 t2 = texture(u_ltc_2, uv);
-    mat3 Minv = mat3(vec3(t1.x, 0.0, t1.y), vec3(0.0, 1.0, 0.0), vec3(t1.z, 0.0, t1.w));
+    Minv = mat3(vec3(t1.x, 0.0, t1.y), vec3(0.0, 1.0, 0.0), vec3(t1.z, 0.0, t1.w));
     // 5. The BRDF's magnitude and Fresnel: Schlick's form with F0 from eta.
     float f = (r.eta - 1.0) / (r.eta + 1.0);
-    float scale = r.microfacet ? f * f * t2.x + (1.0 - f * f) * t2.y : t2.x;
+    scale = r.microfacet ? f * f * t2.x + (1.0 - f * f) * t2.y : t2.x;
+}
+
+// The light every area light gives the surface at P (normal N, toward the eye V).
+vec3 ltc_area_lights(vec3 P, vec3 N, vec3 V, vec3 kd, vec3 ks, Reflectance r) {
+    if (u_area_light_count == 0) return vec3(0.0);
+    mat3 Minv;
+    float scale;
+    ltc_lookup(N, V, r, Minv, scale);
     vec3 c = vec3(0.0);
     for (int i = 0; i < u_area_light_count; ++i) {
         vec2 ff = ltc_evaluate(N, V, P, Minv, i, u_area_two_sided[i]);
         c += u_area_radiance[i] * (kd * ff.x + ks * (ff.y * scale));
     }
     return c;
+}
+
+// The same light without the material, for the light pre-pass
+// (deferred/ltc_area_lights_deferred.rs): diffuse D and specular S, the
+// surface's light being kd D + ks S.
+void ltc_area_light_parts(vec3 P, vec3 N, vec3 V, Reflectance r, out vec3 D, out vec3 S) {
+    D = vec3(0.0);
+    S = vec3(0.0);
+    if (u_area_light_count == 0) return;
+    mat3 Minv;
+    float scale;
+    ltc_lookup(N, V, r, Minv, scale);
+    for (int i = 0; i < u_area_light_count; ++i) {
+        vec2 ff = ltc_evaluate(N, V, P, Minv, i, u_area_two_sided[i]);
+        D += u_area_radiance[i] * ff.x;
+        S += u_area_radiance[i] * (ff.y * scale);
+    }
 }
 #endif

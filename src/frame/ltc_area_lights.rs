@@ -2,8 +2,10 @@
 //! Polygonal-Light Shading with Linearly Transformed Cosines"): the two LTC
 //! fit tables (src/lighting/ltc_tables/) as 64 x 64 RGBA32F textures, made
 //! when a scene with `[[area_lights]]` loads, and the lights' uniforms. The
-//! forward pass binds them for glsl/lighting/ltc_area_lights.glsl; the
-//! technique (src/techniques/lighting/ltc_area_lights.rs) draws the lights.
+//! forward pass and the G-buffer paths' area-light pass
+//! (src/techniques/deferred/ltc_area_lights_deferred.rs) bind them for
+//! glsl/lighting/ltc_area_lights.glsl; the technique
+//! (src/techniques/lighting/ltc_area_lights.rs) draws the lights.
 
 use crate::frame::uniforms::unit;
 use crate::gl::Gl;
@@ -15,21 +17,21 @@ use crate::scene::{RenderPath, Scene, Shading};
 use anyhow::{Result, bail};
 use glow::{HasContext, PixelUnpackData};
 
-/// The two tables, on units 25 and 26 while the forward pass draws.
+/// The two tables, on units 25 and 26 while a pass that shades with them draws.
 pub struct LtcTables {
     pub ltc_1: Texture,
     pub ltc_2: Texture,
 }
 
 /// Whether the frame shades and draws the scene's area lights: it has some,
-/// `render.area_lights` is on, the forward path with Phong shading (what
-/// else leaves them out is in the scene's warnings).
+/// `render.area_lights` is on, and the path lights per pixel: a G-buffer
+/// path, or forward with Phong shading (what else leaves them out is in the
+/// scene's warnings).
 pub fn wanted(scene: &Scene) -> bool {
     let r = &scene.render;
     !scene.area_lights.is_empty()
         && r.area_lights
-        && r.path == RenderPath::Forward
-        && r.shading == Shading::Phong
+        && (r.path != RenderPath::Forward || r.shading == Shading::Phong)
 }
 
 impl LtcTables {

@@ -158,7 +158,7 @@ pub(super) fn resolve(files: &[AreaLightFile]) -> Result<Vec<AreaLight>> {
 }
 
 /// What the scene's area lights do not reach, one line each (printed with
-/// the scene's warnings): other paths, other shading modes, the objects the
+/// the scene's warnings): forward's other shading modes, the objects the
 /// parallax and transparency passes draw. Nothing is left out in silence.
 pub(super) fn warnings(scene: &super::Scene) -> Vec<String> {
     use super::{Parallax, RenderPath, Shading};
@@ -167,25 +167,27 @@ pub(super) fn warnings(scene: &super::Scene) -> Vec<String> {
         return vec![];
     }
     let lights = format!("area_lights: the {n} area lights are");
-    if r.path != RenderPath::Forward {
-        return vec![format!(
-            "{lights} drawn on the forward path only (render.path = \"forward\"); the {} path leaves them out",
-            r.path
-        )];
-    }
-    if r.shading != Shading::Phong {
+    // The G-buffer paths light every pixel, whatever render.shading says.
+    if r.path == RenderPath::Forward && r.shading != Shading::Phong {
         return vec![format!(
             "{lights} shaded per fragment only (render.shading = \"phong\"); {} shading leaves them out",
             r.shading
         )];
     }
     let mut w = Vec::new();
+    if r.path != RenderPath::Forward && r.area_light_reference != AreaLightReference::Off {
+        w.push(format!(
+            "area_lights: render.area_light_reference = \"{}\" is drawn on the forward path only; the {} path shades the area lights by LTC",
+            r.area_light_reference, r.path
+        ));
+    }
     let drawn = |o: &&super::Object| o.mirror.is_none();
     let material = |o: &super::Object| &scene.materials[o.material];
     let relief = (scene.objects.iter().filter(drawn))
         .filter(|o| material(o).height_map.is_some() && !material(o).is_transparent())
         .count();
-    if relief > 0 && r.parallax != Parallax::Off {
+    // Only forward has the parallax pass; elsewhere they are in the G-buffer.
+    if relief > 0 && r.parallax != Parallax::Off && r.path == RenderPath::Forward {
         w.push(format!(
             "{lights} not lit on the {relief} objects the parallax pass draws (materials with a height_map)"
         ));

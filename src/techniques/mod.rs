@@ -44,8 +44,6 @@ pub static ALL: &[&Technique] = &[
     &vertex_geometry::exploding_objects::EXPLODING_OBJECTS,
     // Into forward's target, the objects with a height map that forward skips.
     &lighting::parallax_mapping::PARALLAX_MAPPING,
-    // The area lights' rectangles, over the world forward shaded with them.
-    &lighting::ltc_area_lights::LTC_AREA_LIGHTS,
     &vertex_geometry::tessellation::TESSELLATION,
     &deferred::gbuffer::GBUFFER,
     &deferred::deferred_shading::DEFERRED_SHADING,
@@ -53,6 +51,9 @@ pub static ALL: &[&Technique] = &[
     &deferred::stencil_light_volumes::STENCIL_LIGHT_VOLUMES,
     &deferred::far_field::FAR_FIELD,
     &deferred::tiled_shading::TILED_SHADING,
+    // The area lights' light, added to what the lighting pass accumulated
+    // (the light pre-pass runs it as a step of its own).
+    &deferred::ltc_area_lights_deferred::LTC_AREA_LIGHTS_DEFERRED,
     // After the lights, as notes 03 orders them; before the passes that
     // add the ambient term (the combine, the composite).
     &deferred::ambient_light::AMBIENT_LIGHT,
@@ -60,6 +61,9 @@ pub static ALL: &[&Technique] = &[
     // Added to the accumulated light, before the composite reads it.
     &sky::skybox_reflection::SKYBOX_REFLECTION,
     &deferred::composite::COMPOSITE,
+    // The area lights' rectangles, over the world every path shaded with
+    // them, tested against its depth.
+    &lighting::ltc_area_lights::LTC_AREA_LIGHTS,
     // Opaque rocks after every path's opaque world (its depth is in the
     // world target by now), before the mirrors and the sky.
     &vertex_geometry::instancing::INSTANCING,

@@ -25,6 +25,8 @@
 //! * the slim G-buffer (no specular attachment when every material shares
 //!   one specular colour) draws every path's image byte for byte as the
 //!   full one (slim_gbuffer.rs).
+//! * area lights (LTC) on every G-buffer path == forward within 2/255 and
+//!   0.05 % of pixels over 1/255 (ltc_area_lights_deferred.rs).
 //!
 //! Every render runs with GL debug output on and fails on any GL error.
 
@@ -39,6 +41,7 @@ mod far_field_sh;
 mod hardware_srgb;
 mod light_halves;
 mod light_volumes;
+mod ltc_area_lights_deferred;
 mod numeric_edges;
 mod numeric_sweep;
 mod packed_gbuffer;

@@ -8,7 +8,8 @@
 //! (bounds from the measured LTC error, src/lighting/ltc/tests.rs). Hard
 //! cases: a light behind the surface (0), straddling the horizon (clipped),
 //! seen from behind (0, or lit when two-sided), grazing view, smooth and
-//! rough. And the scene's warnings on the paths that leave the lights out.
+//! rough. And the scene's warnings on the shadings that leave the lights out
+//! (the G-buffer paths: tests/deferred/ltc_area_lights_deferred.rs).
 
 use crate::common;
 use glam::{DVec3, Vec3};
@@ -175,35 +176,38 @@ fn the_full_shading_against_the_cpu_twin_and_monte_carlo() {
 }
 
 #[test]
-fn other_paths_and_shadings_say_they_leave_the_lights_out() {
+fn other_shadings_say_they_leave_the_lights_out() {
     let scene = common::scene("area-lights.toml");
+    let warned = |s: &Scene| {
+        let w = s.warnings();
+        w.iter().any(|w| {
+            w.starts_with("area_lights: the 3 area lights") && w.contains("per fragment only")
+        })
+    };
+    assert!(!warned(&scene));
+    // Gouraud shading on the forward path leaves them out, and says so.
+    let mut gouraud = scene.clone();
+    gouraud.render.shading = Shading::Gouraud;
+    assert!(warned(&gouraud), "{:?}", gouraud.warnings());
+    let plan = gloss::techniques::plan(&gouraud);
     assert!(
-        scene
+        plan.passes
+            .iter()
+            .all(|p| !p.name.starts_with("area lights"))
+    );
+    // A G-buffer path lights every pixel whatever render.shading says: the
+    // area lights are drawn (deferred/ltc_area_lights_deferred.rs), no warning.
+    gouraud.render.path = RenderPath::Deferred;
+    assert!(
+        gouraud
             .warnings()
             .iter()
-            .all(|w| !w.starts_with("area_lights"))
+            .all(|w| !w.starts_with("area_lights")),
+        "{:?}",
+        gouraud.warnings()
     );
-    let deferred = |s: &mut Scene| s.render.path = RenderPath::Deferred;
-    let gouraud = |s: &mut Scene| s.render.shading = Shading::Gouraud;
-    for (key, change, says) in [
-        (
-            "deferred",
-            &deferred as &dyn Fn(&mut Scene),
-            "forward path only",
-        ),
-        ("gouraud", &gouraud, "per fragment only"),
-    ] {
-        let mut s = scene.clone();
-        change(&mut s);
-        let w = s.warnings();
-        assert!(
-            w.iter()
-                .any(|w| w.starts_with("area_lights: the 3 area lights") && w.contains(says)),
-            "{key}: {w:?}"
-        );
-        let plan = gloss::techniques::plan(&s);
-        assert!(plan.passes.iter().all(|p| p.name != "area lights"), "{key}");
-    }
+    let plan = gloss::techniques::plan(&gouraud);
+    assert!(plan.has_pass("area lights (LTC)") && plan.has_pass("area lights"));
 }
 
 #[test]

@@ -173,7 +173,7 @@ pub static GBUFFER_ENCODING: Knob = Knob {
 pub static AREA_LIGHTS: Knob = Knob {
     key: "render.area_lights",
     label: "area lights (LTC)",
-    help: "shade the [[area_lights]] rectangles with linearly transformed cosines and draw them (Heitz et al. 2016; forward path, Phong shading)",
+    help: "shade the [[area_lights]] rectangles with linearly transformed cosines and draw them (Heitz et al. 2016; every path, forward with Phong shading)",
     kind: Kind::Bool,
     get: |r| Value::Bool(r.area_lights),
     set: |r, v| {

@@ -5,7 +5,9 @@
 //! 1. A thin G-buffer: normal + shininess and depth only (gbuffer.rs).
 //! 2. The light pre-pass: per light, its volume (light_volumes.rs: the same
 //!    steps, state and meshes), accumulating *diffuse* light and *specular*
-//!    light into two HDR targets.
+//!    light into two HDR targets; then the area lights' diffuse and
+//!    specular light, if the scene has area lights
+//!    (ltc_area_lights_deferred.rs), added to the same targets.
 //! 3. The combine pass: the scene drawn again (the same vertex shader,
 //!    gl_Position invariant) with glDepthFunc(GL_LEQUAL) against the
 //!    G-buffer's depth, copied into the output with glBlitFramebuffer, and no
@@ -32,6 +34,7 @@ use crate::scene::knobs;
 use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
 use crate::techniques::deferred::light_volumes::{draw_bounded_volumes, volume_pass};
+use crate::techniques::deferred::ltc_area_lights_deferred::{LightPrepass, prepass_pass};
 use anyhow::Result;
 use glow::HasContext;
 
@@ -63,6 +66,7 @@ pub const DEFERRED_LIGHTING: Technique = Technique {
 /// The steps of this technique's passes.
 const LIGHT_PREPASS: u32 = 0;
 const COMBINE: u32 = 1;
+const AREA_LIGHTS: u32 = 2;
 
 fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     if scene.render.path != RenderPath::Prepass {
@@ -81,6 +85,7 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
                 .with_variant(variant),
         );
     }
+    v.extend(prepass_pass(scene).map(|p| p.step(AREA_LIGHTS)));
     let draws = format!(
         "{} objects again, GL_LEQUAL against the G-buffer's depth (blitted): material x light, {}",
         scene.opaque_objects(),
@@ -95,7 +100,9 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
 }
 
 fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
-    if scene.render.path != RenderPath::Prepass || lights.is_empty() {
+    // The area lights' pass makes it when no light does.
+    let area_lights = prepass_pass(scene).is_some();
+    if scene.render.path != RenderPath::Prepass || (lights.is_empty() && !area_lights) {
         return vec![];
     }
     let format = scene.render.accumulation.gl();
@@ -115,6 +122,8 @@ struct DeferredLighting {
     combine: Program,
     /// The same, tinting by the cascade (shadow.cascade_colors).
     combine_tinted: Program,
+    /// The area lights' diffuse and specular light (after step 2).
+    area_lights: LightPrepass,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -139,6 +148,7 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         light,
         combine,
         combine_tinted,
+        area_lights: LightPrepass::create(p)?,
     }))
 }
 
@@ -147,6 +157,7 @@ impl RunPasses for DeferredLighting {
         match pass.step {
             LIGHT_PREPASS => self.light_prepass(f),
             COMBINE => self.combine(f),
+            AREA_LIGHTS => self.area_lights.run(f),
             other => unreachable!("deferred lighting has no step {other}"),
         }
     }

@@ -10,6 +10,9 @@
 //! | volumes  | gbuffer.rs       | light_volumes.rs / stencil_light_volumes.rs | composite.rs    |
 //! | prepass  | gbuffer.rs, thin | deferred_lighting.rs (volumes)         | deferred_lighting.rs |
 //! | tiled    | gbuffer.rs       | tiled_shading.rs (lights binned per tile), far_field.rs (the tails, at low resolution) | composite.rs |
+//!
+//! On every path the `[[area_lights]]` add their light after step 2
+//! (ltc_area_lights_deferred.rs).
 
 pub mod ambient_light;
 pub mod composite;
@@ -18,5 +21,6 @@ pub mod deferred_shading;
 pub mod far_field;
 pub mod gbuffer;
 pub mod light_volumes;
+pub mod ltc_area_lights_deferred;
 pub mod stencil_light_volumes;
 pub mod tiled_shading;

@@ -25,9 +25,11 @@
 //! lighting/forward.frag; src/frame/ltc_area_lights.rs binds the two tables
 //! on units 25 and 26 as RGBA32F textures). This pass then draws each
 //! light's rectangle with its radiance, so that the light is seen, as the
-//! paper's demo does: after the forward pass, into its target, with its
-//! depth. Forward path, Phong shading; the scene's warnings name what else
-//! leaves the lights out.
+//! paper's demo does: after the world is shaded, into its target, with its
+//! depth (after the composite or the combine on the G-buffer paths, whose
+//! own pass, deferred/ltc_area_lights_deferred.rs, shades from the
+//! G-buffer). Every path but forward's Gouraud and flat shading; the
+//! scene's warnings name what else leaves the lights out.
 //!
 //! GL state: glDepthFunc(GL_LESS) with depth writes on, no culling
 //! (gl_FrontFacing tells the lit side), glFrontFace for a reflected view,
@@ -45,7 +47,7 @@ use crate::geometry::{MeshData, Vertex};
 use crate::gl::mesh::Mesh;
 use crate::gl::program::Program;
 use crate::scene::area_lights::AreaLightReference;
-use crate::scene::{Scene, knobs};
+use crate::scene::{RenderPath, Scene, knobs};
 use anyhow::Result;
 use glow::HasContext;
 
@@ -79,18 +81,19 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
     }
     let n = scene.area_lights.len();
     let r = &scene.render;
-    let shaded = match r.area_light_reference {
-        AreaLightReference::Off => "by LTC".to_string(),
-        reference => {
+    let shaded = match (r.path, r.area_light_reference) {
+        (RenderPath::Forward, AreaLightReference::Off) => {
+            "the forward pass shaded the world with them by LTC".to_string()
+        }
+        (RenderPath::Forward, reference) => {
             let points = r.area_light_points;
             format!(
-                "by the {reference} reference: gloss's BRDF at {points} x {points} points a triangle of each light"
+                "the forward pass shaded the world with them by the {reference} reference: gloss's BRDF at {points} x {points} points a triangle of each light"
             )
         }
+        _ => "the area lights (LTC) pass shaded the world with them by LTC".to_string(),
     };
-    let draws = format!(
-        "{n} area lights x 2 triangles, each its radiance (the forward pass shaded the world with them {shaded})"
-    );
+    let draws = format!("{n} area lights x 2 triangles, each its radiance ({shaded})");
     vec![Pass::new(
         "area lights",
         world_target(scene),

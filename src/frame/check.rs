@@ -80,7 +80,10 @@ pub fn check_without_gl(scene: &Scene) -> Result<Vec<String>> {
             .push("GL_MAX_TEXTURE_IMAGE_UNITS >= 18 for the G-buffer's microfacet triple".into());
     }
     if (scene.lights.iter()).any(|l| l.shadow.is_some_and(|s| s.cascades > 1)) {
-        unchecked.push("GL_MAX_TEXTURE_IMAGE_UNITS >= 19 for the shadow cascades".into());
+        unchecked.push(format!(
+            "GL_MAX_TEXTURE_IMAGE_UNITS >= {} for the shadow cascades",
+            crate::frame::units::SHADOW_CASCADES + 1
+        ));
     }
     if lights_in_buffer_texture(scene) {
         if scene.lights.len() > BUFFER_LIGHTS_ON_EVERY_GL {

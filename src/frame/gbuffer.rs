@@ -301,20 +301,17 @@ pub fn check_units(gl: &glow::Context, scene: &crate::scene::Scene) -> anyhow::R
     if !deferred || material_attachments(scene).is_empty() {
         return Ok(());
     }
-    let have = unsafe { gl.get_parameter_i32(glow::MAX_TEXTURE_IMAGE_UNITS) };
-    let need = unit::GBUFFER_CONVERT as i32 + 1;
-    if have < need {
-        anyhow::bail!(
-            "{}: a microfacet material on the {} path reads its G-buffer triple from texture \
-             unit {} and {}, but this GL has {have} fragment texture units: use \
-             render.path = \"forward\"",
-            scene.path.display(),
-            scene.render.path,
-            unit::GBUFFER_ALPHA,
-            unit::GBUFFER_CONVERT
-        );
-    }
-    Ok(())
+    let key = format!(
+        "render.path = \"{}\" with a microfacet material",
+        scene.render.path
+    );
+    let need = crate::frame::unit_check::UnitsNeeded {
+        key: &key,
+        reads: "its G-buffer triple",
+        units: &[unit::GBUFFER_ALPHA, unit::GBUFFER_CONVERT],
+        instead: "use render.path = \"forward\"",
+    };
+    crate::frame::unit_check::check_units(gl, &scene.path, &need)
 }
 
 /// Unbind the G-buffer's texture units.

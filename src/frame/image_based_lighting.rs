@@ -8,10 +8,12 @@
 //! composite read them as the ambient term (glsl/common/image_based_lighting.glsl).
 
 use crate::frame::uniforms::unit;
+use crate::frame::unit_check::{self, UnitsNeeded};
 use crate::gl::Gl;
 use crate::gl::cube_map::CubeMap;
 use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture, set_sampling};
+use crate::gl::texture_units::{self, OnUnit};
 use crate::lighting::image_based_lighting::{
     BRDF_SIZE, IRRADIANCE_SIZE, PREFILTERED_LEVELS, PREFILTERED_SIZE,
 };
@@ -20,6 +22,14 @@ use crate::scene::sky::SkySettings;
 use anyhow::{Result, anyhow};
 use glow::HasContext;
 use std::cell::RefCell;
+
+/// The maps' units and what `check_units` says without them.
+const UNITS: UnitsNeeded = UnitsNeeded {
+    key: "render.ibl",
+    reads: "its maps",
+    units: &[unit::IBL_IRRADIANCE, unit::IBL_PREFILTERED, unit::IBL_BRDF],
+    instead: "set render.ibl = false",
+};
 
 pub struct IblMaps {
     gl: Gl,
@@ -72,6 +82,28 @@ impl IblMaps {
         }
     }
 
+    /// The three maps on their units (`bind`, `unbind`).
+    fn on_units(&self) -> [OnUnit; 3] {
+        let cube = glow::TEXTURE_CUBE_MAP;
+        [
+            OnUnit {
+                unit: unit::IBL_IRRADIANCE,
+                target: cube,
+                texture: self.irradiance.id,
+            },
+            OnUnit {
+                unit: unit::IBL_PREFILTERED,
+                target: cube,
+                texture: self.prefiltered.id,
+            },
+            OnUnit {
+                unit: unit::IBL_BRDF,
+                target: glow::TEXTURE_2D,
+                texture: self.brdf.id,
+            },
+        ]
+    }
+
     /// The prefiltered map's levels (fewer for a small environment).
     pub fn levels(&self) -> i32 {
         PREFILTERED_LEVELS.min(prefiltered_levels(self.prefiltered.size))
@@ -109,30 +141,13 @@ pub fn bind(gl: &glow::Context, p: &Program, maps: Option<&IblMaps>) {
     p.set_i32("u_ibl_prefiltered", unit::IBL_PREFILTERED as i32);
     p.set_i32("u_ibl_brdf", unit::IBL_BRDF as i32);
     p.set_f32("u_ibl_levels", m.levels() as f32);
-    unsafe {
-        gl.active_texture(glow::TEXTURE0 + unit::IBL_IRRADIANCE);
-        gl.bind_texture(glow::TEXTURE_CUBE_MAP, Some(m.irradiance.id));
-        gl.active_texture(glow::TEXTURE0 + unit::IBL_PREFILTERED);
-        gl.bind_texture(glow::TEXTURE_CUBE_MAP, Some(m.prefiltered.id));
-        gl.active_texture(glow::TEXTURE0 + unit::IBL_BRDF);
-        gl.bind_texture(glow::TEXTURE_2D, Some(m.brdf.id));
-        gl.active_texture(glow::TEXTURE0);
-    }
+    texture_units::bind(gl, &m.on_units());
 }
 
 /// Undo `bind`.
 pub fn unbind(gl: &glow::Context, maps: Option<&IblMaps>) {
-    if maps.is_none() {
-        return;
-    }
-    unsafe {
-        gl.active_texture(glow::TEXTURE0 + unit::IBL_IRRADIANCE);
-        gl.bind_texture(glow::TEXTURE_CUBE_MAP, None);
-        gl.active_texture(glow::TEXTURE0 + unit::IBL_PREFILTERED);
-        gl.bind_texture(glow::TEXTURE_CUBE_MAP, None);
-        gl.active_texture(glow::TEXTURE0 + unit::IBL_BRDF);
-        gl.bind_texture(glow::TEXTURE_2D, None);
-        gl.active_texture(glow::TEXTURE0);
+    if let Some(m) = maps {
+        texture_units::unbind(gl, &m.on_units());
     }
 }
 
@@ -142,16 +157,5 @@ pub fn check_units(gl: &glow::Context, scene: &Scene) -> Result<()> {
     if !wanted(scene) {
         return Ok(());
     }
-    let have = unsafe { gl.get_parameter_i32(glow::MAX_TEXTURE_IMAGE_UNITS) };
-    let need = unit::IBL_BRDF as i32 + 1;
-    if have < need {
-        anyhow::bail!(
-            "{}: render.ibl reads its maps from texture units {}..={}, but this GL has {have} \
-             fragment texture units: set render.ibl = false",
-            scene.path.display(),
-            unit::IBL_IRRADIANCE,
-            unit::IBL_BRDF
-        );
-    }
-    Ok(())
+    unit_check::check_units(gl, &scene.path, &UNITS)
 }

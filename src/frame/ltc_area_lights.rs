@@ -8,14 +8,24 @@
 //! (src/techniques/lighting/ltc_area_lights.rs) draws the lights.
 
 use crate::frame::uniforms::unit;
+use crate::frame::unit_check::{self, UnitsNeeded};
 use crate::gl::Gl;
 use crate::gl::program::Program;
 use crate::gl::texture::{Sampling, Texture, set_sampling};
+use crate::gl::texture_units::{self, OnUnit};
 use crate::lighting::ltc::{LTC_SIZE, ltc_1, ltc_2};
 use crate::scene::area_lights::{AreaLightReference, MAX_AREA_LIGHTS};
 use crate::scene::{RenderPath, Scene, Shading};
 use anyhow::{Result, bail};
 use glow::{HasContext, PixelUnpackData};
+
+/// The tables' units and what `check_units` says without them.
+const UNITS: UnitsNeeded = UnitsNeeded {
+    key: "[[area_lights]]",
+    reads: "the LTC tables",
+    units: &[unit::LTC_1, unit::LTC_2],
+    instead: "set render.area_lights = false",
+};
 
 /// The two tables, on units 25 and 26 while a pass that shades with them draws.
 pub struct LtcTables {
@@ -35,6 +45,16 @@ pub fn wanted(scene: &Scene) -> bool {
 }
 
 impl LtcTables {
+    /// The two tables on their units (`bind`, `unbind`).
+    fn on_units(&self) -> [OnUnit; 2] {
+        let on = |unit, t: &Texture| OnUnit {
+            unit,
+            target: glow::TEXTURE_2D,
+            texture: t.id,
+        };
+        [on(unit::LTC_1, &self.ltc_1), on(unit::LTC_2, &self.ltc_2)]
+    }
+
     /// The tables for `scene` (None: it has no area lights). Made whatever
     /// the knobs say, so that switching the lights on needs nothing new.
     pub fn for_scene(gl: &Gl, scene: &Scene) -> Result<Option<LtcTables>> {
@@ -113,13 +133,7 @@ pub fn bind(gl: &glow::Context, p: &Program, scene: &Scene, tables: Option<&LtcT
         p.set_vec3(&format!("u_area_radiance[{i}]"), l.radiance());
         p.set_bool(&format!("u_area_two_sided[{i}]"), l.two_sided);
     }
-    unsafe {
-        gl.active_texture(glow::TEXTURE0 + unit::LTC_1);
-        gl.bind_texture(glow::TEXTURE_2D, Some(t.ltc_1.id));
-        gl.active_texture(glow::TEXTURE0 + unit::LTC_2);
-        gl.bind_texture(glow::TEXTURE_2D, Some(t.ltc_2.id));
-        gl.active_texture(glow::TEXTURE0);
-    }
+    texture_units::bind(gl, &t.on_units());
 }
 
 /// The shader's `u_area_light_reference`: 0 LTC, 1 the quadrature with the
@@ -134,15 +148,8 @@ fn reference_mode(r: AreaLightReference) -> i32 {
 
 /// Undo `bind`.
 pub fn unbind(gl: &glow::Context, tables: Option<&LtcTables>) {
-    if tables.is_none() {
-        return;
-    }
-    unsafe {
-        gl.active_texture(glow::TEXTURE0 + unit::LTC_1);
-        gl.bind_texture(glow::TEXTURE_2D, None);
-        gl.active_texture(glow::TEXTURE0 + unit::LTC_2);
-        gl.bind_texture(glow::TEXTURE_2D, None);
-        gl.active_texture(glow::TEXTURE0);
+    if let Some(t) = tables {
+        texture_units::unbind(gl, &t.on_units());
     }
 }
 
@@ -152,14 +159,5 @@ pub fn check_units(gl: &glow::Context, scene: &Scene) -> Result<()> {
     if !wanted(scene) {
         return Ok(());
     }
-    let have = unsafe { gl.get_parameter_i32(glow::MAX_TEXTURE_IMAGE_UNITS) };
-    if have <= unit::LTC_2 as i32 {
-        bail!(
-            "{}: [[area_lights]] read the LTC tables from texture units {} and {}, but this GL has {have} fragment texture units: set render.area_lights = false",
-            scene.path.display(),
-            unit::LTC_1,
-            unit::LTC_2
-        );
-    }
-    Ok(())
+    unit_check::check_units(gl, &scene.path, &UNITS)
 }

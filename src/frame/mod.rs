@@ -6,7 +6,9 @@
 //! - `draw_list`: the scene's objects on the GPU, ready to draw.
 //! - `lights`: what each light derives from the scene (volume radius, volume
 //!   mesh) and the std140 block the shaders read: computed once, here.
-//! - `uniforms`: per-frame values; `units`: the texture units, named once.
+//! - `uniforms`: per-frame values; `units`: the texture units, named once;
+//!   `unit_check`: that the GL has the units past the 16 GL 3.3 promises
+//!   that a scene's key asks for (gl::texture_units binds textures on them).
 //! - `forward_pass`: the clip distances and per-frame uniforms the passes
 //!   that light objects the forward way set up alike.
 //! - `gbuffer`: the G-buffer's layout, written by one technique and read by many.
@@ -54,6 +56,7 @@ pub mod technique;
 pub mod texturing;
 pub mod timing;
 pub mod uniforms;
+pub mod unit_check;
 pub mod units;
 pub mod variant;
 pub mod views;

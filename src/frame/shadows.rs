@@ -23,6 +23,7 @@ use crate::frame::units as unit;
 use crate::gl::Gl;
 use crate::gl::buffer::Buffer;
 use crate::gl::depth_map::DepthMap;
+use crate::gl::texture_units::bind_one;
 use crate::math::shadow as matrices;
 use crate::scene::shadows::{MAX_SHADOW_CUBES, MAX_SHADOW_MAPS_2D};
 use crate::scene::{Camera, CubeRender, LightKind, Pcf, Scene, Shadow};
@@ -231,7 +232,8 @@ impl ShadowMaps {
         for c in casters(scene) {
             let size = c.shadow.resolution as i32;
             let map = if c.cascaded() {
-                cascades::check_units(gl)?;
+                let need = &cascades::UNITS;
+                crate::frame::unit_check::check_units(gl, &scene.path, need)?;
                 DepthMap::new_array(gl, size, c.shadow.cascades as i32)?
             } else if c.cube {
                 let layered = c.shadow.cube == CubeRender::GeometryShader;
@@ -323,16 +325,14 @@ impl ShadowMaps {
     /// empty maps) and the `Shadows` block to its binding point.
     pub fn bind(&self, gl: &glow::Context) {
         unsafe {
-            for i in 0..MAX_SHADOW_MAPS_2D {
-                gl.active_texture(glow::TEXTURE0 + UNIT_2D + i as u32);
-                gl.bind_texture(glow::TEXTURE_2D, Some(self.empty_2d.texture));
-                gl.active_texture(glow::TEXTURE0 + UNIT_CUBE + i as u32);
-                gl.bind_texture(glow::TEXTURE_CUBE_MAP, Some(self.empty_cube.texture));
+            for i in 0..MAX_SHADOW_MAPS_2D as u32 {
+                let (flat, cube) = (self.empty_2d.texture, self.empty_cube.texture);
+                bind_one(gl, UNIT_2D + i, glow::TEXTURE_2D, Some(flat));
+                bind_one(gl, UNIT_CUBE + i, glow::TEXTURE_CUBE_MAP, Some(cube));
             }
             self.cascades.bind(gl);
             for (c, map) in &self.maps {
-                gl.active_texture(glow::TEXTURE0 + c.unit());
-                gl.bind_texture(map.target, Some(map.texture));
+                bind_one(gl, c.unit(), map.target, Some(map.texture));
             }
             gl.active_texture(glow::TEXTURE0);
             gl.bind_buffer_base(glow::UNIFORM_BUFFER, SHADOWS_BINDING, Some(self.ubo.id));
@@ -349,10 +349,8 @@ impl ShadowMaps {
     pub fn unbind(&self, gl: &glow::Context) {
         unsafe {
             for i in 0..MAX_SHADOW_MAPS_2D as u32 {
-                gl.active_texture(glow::TEXTURE0 + UNIT_2D + i);
-                gl.bind_texture(glow::TEXTURE_2D, None);
-                gl.active_texture(glow::TEXTURE0 + UNIT_CUBE + i);
-                gl.bind_texture(glow::TEXTURE_CUBE_MAP, None);
+                bind_one(gl, UNIT_2D + i, glow::TEXTURE_2D, None);
+                bind_one(gl, UNIT_CUBE + i, glow::TEXTURE_CUBE_MAP, None);
             }
             self.cascades.unbind(gl);
             gl.active_texture(glow::TEXTURE0);

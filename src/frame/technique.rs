@@ -90,6 +90,14 @@ pub trait RunPasses {
     /// Run `pass` (one of those `passes` returned; `pass.step` says which).
     /// A pass sets the GL state it needs and restores it before returning.
     fn run(&self, pass: &Pass, frame: &Frame);
+
+    /// Build what `run` needs for `pass` in `frame` and builds on first use
+    /// (the composite's program for the frame's output); the renderer calls
+    /// it before `run`, so that a shader that fails is the frame's error.
+    /// Most techniques build everything in `create`: nothing to do.
+    fn prepare(&self, _pass: &Pass, _frame: &Frame) -> Result<()> {
+        Ok(())
+    }
 }
 
 /// What `create` builds programs with.
@@ -107,7 +115,41 @@ pub struct Programs<'a> {
     pub variant_used: &'a std::cell::Cell<bool>,
 }
 
+/// What `Programs` builds with, owned: for a technique that builds a
+/// program on first use rather than in `create`.
+pub struct LaterPrograms {
+    gl: Gl,
+    sources: Sources,
+    defines: Vec<(String, String)>,
+}
+
+impl LaterPrograms {
+    /// `Programs::build_with`, later.
+    pub fn build_with(
+        &self,
+        stages: &[(u32, &str)],
+        defines: &[(&str, String)],
+    ) -> Result<Program> {
+        let all: Vec<(&str, String)> = (self.defines.iter())
+            .map(|(k, v)| (k.as_str(), v.clone()))
+            .chain(defines.iter().cloned())
+            .collect();
+        Program::new(&self.gl, &self.sources, stages, &all)
+    }
+}
+
 impl Programs<'_> {
+    /// What these build with, kept for building later (`LaterPrograms`).
+    pub fn later(&self) -> LaterPrograms {
+        LaterPrograms {
+            gl: self.gl.clone(),
+            sources: self.sources.clone(),
+            defines: (self.defines.iter())
+                .map(|(k, v)| (k.to_string(), v.clone()))
+                .collect(),
+        }
+    }
+
     /// Compile and link `stages` = [(GL_VERTEX_SHADER, "deferred/gbuffer.vert"), ...].
     pub fn build(&self, stages: &[(u32, &str)]) -> Result<Program> {
         Program::new(self.gl, self.sources, stages, self.defines)

@@ -131,10 +131,7 @@ impl CubeMap {
             _ => (glow::RGBA, glow::UNSIGNED_BYTE),
         };
         unsafe {
-            let id = gl
-                .create_texture()
-                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
-            super::live::made(super::live::Kind::Texture);
+            let id = super::live::new_texture(gl)?;
             gl.bind_texture(glow::TEXTURE_CUBE_MAP, Some(id));
             for level in 0..=max_level(size, size) {
                 let n = (size >> level).max(1);

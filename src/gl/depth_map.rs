@@ -80,10 +80,7 @@ impl DepthMap {
         }
         let target = glow::TEXTURE_2D_ARRAY;
         let mut m = unsafe {
-            let texture = gl
-                .create_texture()
-                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
-            super::live::made(super::live::Kind::Texture);
+            let texture = super::live::new_texture(gl)?;
             gl.bind_texture(target, Some(texture));
             gl.tex_image_3d(
                 target,
@@ -129,10 +126,7 @@ impl DepthMap {
             bail!("a depth map of {size} x {size} texels");
         }
         unsafe {
-            let texture = gl
-                .create_texture()
-                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
-            super::live::made(super::live::Kind::Texture);
+            let texture = super::live::new_texture(gl)?;
             gl.bind_texture(target, Some(texture));
             let images: &[u32] = if target == glow::TEXTURE_2D {
                 &[glow::TEXTURE_2D]

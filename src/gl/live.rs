@@ -1,8 +1,8 @@
 //! How many GL objects the owners in this module have made and not yet
 //! freed, per kind, on this thread (a context is current on one thread).
 //! Tests read it to show that switching techniques and reloading scenes
-//! leak nothing; it changes no GL state. `new_buffer` and `new_vertex_array`
-//! make an object and count it, for the owners that make them.
+//! leak nothing; it changes no GL state. `new_buffer`, `new_texture` and
+//! `new_vertex_array` make an object and count it, for the owners that make them.
 
 use glow::HasContext;
 use std::cell::Cell;
@@ -51,6 +51,16 @@ pub(crate) unsafe fn new_buffer(gl: &glow::Context) -> anyhow::Result<glow::Buff
     let b = unsafe { gl.create_buffer() }.map_err(|e| anyhow::anyhow!("glGenBuffers: {e}"))?;
     made(Kind::Buffer);
     Ok(b)
+}
+
+/// glGenTextures, counted; the error names the call.
+///
+/// # Safety
+/// A current GL context.
+pub(crate) unsafe fn new_texture(gl: &glow::Context) -> anyhow::Result<glow::Texture> {
+    let t = unsafe { gl.create_texture() }.map_err(|e| anyhow::anyhow!("glGenTextures: {e}"))?;
+    made(Kind::Texture);
+    Ok(t)
 }
 
 /// glGenVertexArrays, counted; the error names the call.

@@ -2,7 +2,9 @@
 //!
 //! Every type here creates one GL object and frees it on drop. None of them
 //! hides a state change: binding, enabling and blending stay in the technique
-//! files, where a student can read them next to the notes.
+//! files, where a student can read them next to the notes. `texture_units`
+//! binds a list of textures on their units for the code that names the list,
+//! and `gloss trace` lists each of its calls at that code's line.
 
 pub mod buffer;
 pub mod cube_map;
@@ -22,6 +24,7 @@ pub mod skin_vertices;
 pub mod stream;
 pub mod texture;
 pub mod texture_buffer;
+pub mod texture_units;
 pub mod trace;
 pub mod window;
 

@@ -1,7 +1,7 @@
 //! 2D textures: loaded from PNG (sRGB or linear), or empty render targets.
 
 use super::Gl;
-use anyhow::{Result, anyhow, bail};
+use anyhow::{Result, bail};
 use glow::{HasContext, PixelUnpackData};
 use std::path::Path;
 
@@ -60,10 +60,7 @@ impl Texture {
     ) -> Result<Texture> {
         let (format, ty) = upload_format(internal_format)?;
         unsafe {
-            let id = gl
-                .create_texture()
-                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
-            super::live::made(super::live::Kind::Texture);
+            let id = super::live::new_texture(gl)?;
             gl.bind_texture(glow::TEXTURE_2D, Some(id));
             gl.tex_image_2d(
                 glow::TEXTURE_2D,
@@ -101,10 +98,7 @@ impl Texture {
         samples: i32,
     ) -> Result<Texture> {
         unsafe {
-            let id = gl
-                .create_texture()
-                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
-            super::live::made(super::live::Kind::Texture);
+            let id = super::live::new_texture(gl)?;
             gl.bind_texture(glow::TEXTURE_2D_MULTISAMPLE, Some(id));
             gl.tex_image_2d_multisample(
                 glow::TEXTURE_2D_MULTISAMPLE,
@@ -163,10 +157,7 @@ impl Texture {
             glow::RGBA8
         };
         unsafe {
-            let id = gl
-                .create_texture()
-                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
-            super::live::made(super::live::Kind::Texture);
+            let id = super::live::new_texture(gl)?;
             gl.bind_texture(glow::TEXTURE_2D, Some(id));
             gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
             gl.tex_image_2d(
@@ -240,10 +231,7 @@ impl Texture {
         }
         let (format, ty) = upload_format(internal_format)?;
         unsafe {
-            let id = gl
-                .create_texture()
-                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
-            super::live::made(super::live::Kind::Texture);
+            let id = super::live::new_texture(gl)?;
             gl.bind_texture(glow::TEXTURE_2D, Some(id));
             for level in 0..=last {
                 let (w, h) = level_size(width, height, level);

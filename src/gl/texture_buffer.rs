@@ -11,7 +11,7 @@
 //! pass's own, visible glActiveTexture / glBindTexture(GL_TEXTURE_BUFFER).
 
 use super::Gl;
-use super::live::{Kind, freed, made};
+use super::live::{Kind, freed};
 use anyhow::{Result, bail};
 use glow::HasContext;
 
@@ -45,15 +45,14 @@ impl TextureBuffer {
         let texel_bytes = texel_bytes(format)?;
         unsafe {
             let buffer = super::live::new_buffer(gl)?;
-            let texture = match gl.create_texture() {
+            let texture = match super::live::new_texture(gl) {
                 Ok(t) => t,
                 Err(e) => {
                     gl.delete_buffer(buffer);
                     freed(Kind::Buffer);
-                    bail!("glGenTextures: {e}");
+                    return Err(e);
                 }
             };
-            made(Kind::Texture);
             gl.bind_buffer(glow::TEXTURE_BUFFER, Some(buffer));
             gl.buffer_data_size(glow::TEXTURE_BUFFER, texel_bytes as i32, glow::STREAM_DRAW);
             gl.bind_buffer(glow::TEXTURE_BUFFER, None);

@@ -366,9 +366,9 @@ impl Renderer {
             };
             let technique = self.techniques[pass.technique].as_deref();
             let technique = technique.expect("built for its pass");
-            let groups = self.debug_groups;
-            passes::run_pass(i + 1, pass, &self.plan.title(i), technique, &frame, groups);
-            timer.mark(pass.name, self.plan.title(i));
+            let (title, groups) = (self.plan.title(i), self.debug_groups);
+            passes::run_pass(i + 1, pass, &title, technique, &frame, groups)?;
+            timer.mark(pass.name, title);
             after_pass(pass);
         }
         self.last_times = timer.finish();

@@ -16,7 +16,9 @@ pub fn has_debug_groups(gl: &glow::Context) -> bool {
 }
 
 /// Run pass number `number` (1-based) of the plan with `technique`;
-/// `title` is the pass named by what it draws (`FramePlan::title`).
+/// `title` is the pass named by what it draws (`FramePlan::title`). First
+/// the technique builds what it builds on first use (`RunPasses::prepare`):
+/// a shader that fails there is the frame's error.
 pub fn run_pass(
     number: usize,
     pass: &Pass,
@@ -24,7 +26,8 @@ pub fn run_pass(
     technique: &dyn RunPasses,
     frame: &Frame,
     groups: bool,
-) {
+) -> anyhow::Result<()> {
+    technique.prepare(pass, frame)?;
     let registered = techniques::ALL[pass.technique];
     let name = format!("{number}. {title} ({})", registered.name);
     if groups {
@@ -47,4 +50,5 @@ pub fn run_pass(
     if groups {
         unsafe { frame.gl.pop_debug_group() };
     }
+    Ok(())
 }

@@ -218,3 +218,67 @@ pub fn state_left_changed(ctx: &Headless, scene: &Scene, w: i32, h: i32) -> Vec<
     .unwrap_or_else(|e| panic!("{}: {e:#}", scene.name));
     changed
 }
+
+/// What `p` (linked with transform-feedback varyings) hands on for one draw,
+/// captured with the rasterizer off: `bytes` of it, read back as floats.
+/// `uniforms` sets `p`'s uniforms with `p` in use; `draw` makes the draw
+/// between glBeginTransformFeedback(`primitive`) and glEndTransformFeedback.
+/// A 1 x 1 framebuffer is bound meanwhile (a draw needs a complete one, even
+/// with the rasterizer off, and the headless context has none of its own);
+/// what it makes is deleted and the bindings it changed are restored.
+/// Panics if the capture raised a GL error.
+pub fn capture_feedback(
+    gl: &glow::Context,
+    p: &gloss::gl::program::Program,
+    primitive: u32,
+    bytes: usize,
+    uniforms: impl FnOnce(&gloss::gl::program::Program),
+    draw: impl FnOnce(&glow::Context),
+) -> Vec<f32> {
+    unsafe {
+        let fbo = gl.create_framebuffer().unwrap();
+        let rb = gl.create_renderbuffer().unwrap();
+        gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
+        gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, 1, 1);
+        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+        gl.framebuffer_renderbuffer(
+            glow::FRAMEBUFFER,
+            glow::COLOR_ATTACHMENT0,
+            glow::RENDERBUFFER,
+            Some(rb),
+        );
+        let buffer = gl.create_buffer().unwrap();
+        gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, Some(buffer));
+        gl.buffer_data_size(
+            glow::TRANSFORM_FEEDBACK_BUFFER,
+            bytes as i32,
+            glow::STATIC_READ,
+        );
+        gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, Some(buffer));
+        p.use_program();
+        uniforms(p);
+        gl.enable(glow::RASTERIZER_DISCARD);
+        gl.begin_transform_feedback(primitive);
+        draw(gl);
+        gl.end_transform_feedback();
+        gl.disable(glow::RASTERIZER_DISCARD);
+        assert_eq!(
+            gl.get_error(),
+            glow::NO_ERROR,
+            "the capture raised a GL error"
+        );
+        let mut out = vec![0u8; bytes];
+        gl.get_buffer_sub_data(glow::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
+        gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, None);
+        gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, None);
+        gl.delete_buffer(buffer);
+        gl.use_program(None);
+        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        gl.delete_framebuffer(fbo);
+        gl.bind_renderbuffer(glow::RENDERBUFFER, None);
+        gl.delete_renderbuffer(rb);
+        (out.chunks_exact(4))
+            .map(|c| f32::from_le_bytes(c.try_into().unwrap()))
+            .collect()
+    }
+}

@@ -34,6 +34,7 @@
 mod common;
 
 mod ambient_light;
+mod composite_programs;
 mod deferred_lighting;
 mod deferred_shading;
 mod far_field;

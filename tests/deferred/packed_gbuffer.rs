@@ -78,19 +78,7 @@ fn on_the_gpu(ctx: &gloss::gl::Headless, normals: &[Vec3]) -> Vec<[Vec3; 3]> {
         })
         .collect();
     let bytes = normals.len() * 9 * 4;
-    unsafe {
-        // A draw needs a complete framebuffer, even with the rasterizer off.
-        let fbo = gl.create_framebuffer().unwrap();
-        let rb = gl.create_renderbuffer().unwrap();
-        gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
-        gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, 1, 1);
-        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-        gl.framebuffer_renderbuffer(
-            glow::FRAMEBUFFER,
-            glow::COLOR_ATTACHMENT0,
-            glow::RENDERBUFFER,
-            Some(rb),
-        );
+    let f = unsafe {
         let vao = gl.create_vertex_array().unwrap();
         gl.bind_vertex_array(Some(vao));
         let vbo = gl.create_buffer().unwrap();
@@ -101,46 +89,24 @@ fn on_the_gpu(ctx: &gloss::gl::Headless, normals: &[Vec3]) -> Vec<[Vec3; 3]> {
         gl.vertex_attrib_pointer_f32(0, 3, glow::FLOAT, false, 24, 0);
         gl.enable_vertex_attrib_array(1);
         gl.vertex_attrib_pointer_f32(1, 3, glow::FLOAT, false, 24, 12);
-        let out_buffer = gl.create_buffer().unwrap();
-        gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, Some(out_buffer));
-        gl.buffer_data_size(
-            glow::TRANSFORM_FEEDBACK_BUFFER,
-            bytes as i32,
-            glow::STATIC_READ,
+        let f = common::capture_feedback(
+            gl,
+            &p,
+            glow::POINTS,
+            bytes,
+            |_| {},
+            |gl| gl.draw_arrays(glow::POINTS, 0, normals.len() as i32),
         );
-        gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, Some(out_buffer));
-        p.use_program();
-        gl.enable(glow::RASTERIZER_DISCARD);
-        gl.begin_transform_feedback(glow::POINTS);
-        gl.draw_arrays(glow::POINTS, 0, normals.len() as i32);
-        gl.end_transform_feedback();
-        gl.disable(glow::RASTERIZER_DISCARD);
-        assert_eq!(
-            gl.get_error(),
-            glow::NO_ERROR,
-            "the capture raised a GL error"
-        );
-        let mut out = vec![0u8; bytes];
-        gl.get_buffer_sub_data(glow::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
-        gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, None);
-        gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, None);
         gl.bind_buffer(glow::ARRAY_BUFFER, None);
         gl.bind_vertex_array(None);
-        gl.delete_buffer(out_buffer);
         gl.delete_buffer(vbo);
         gl.delete_vertex_array(vao);
-        gl.use_program(None);
-        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-        gl.delete_framebuffer(fbo);
-        gl.delete_renderbuffer(rb);
-        let f: Vec<f32> = (out.chunks_exact(4))
-            .map(|c| f32::from_le_bytes(c.try_into().unwrap()))
-            .collect();
-        let v = |k: usize| Vec3::new(f[k], f[k + 1], f[k + 2]);
-        (0..normals.len())
-            .map(|i| [v(9 * i), v(9 * i + 3), v(9 * i + 6)])
-            .collect()
-    }
+        f
+    };
+    let v = |k: usize| Vec3::new(f[k], f[k + 1], f[k + 2]);
+    (0..normals.len())
+        .map(|i| [v(9 * i), v(9 * i + 3), v(9 * i + 6)])
+        .collect()
 }
 
 /// Directions spread over the sphere (Fibonacci), then the hard cases.

@@ -18,4 +18,5 @@ mod plan;
 mod skinning;
 mod tessellation;
 mod timing;
+mod unit_check;
 mod visualizing_normals;

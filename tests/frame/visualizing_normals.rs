@@ -25,29 +25,7 @@ fn captured(ctx: &gloss::gl::Headless, mesh: &MeshData, model: Mat4, length: f32
     let m = Mesh::upload(gl, mesh).unwrap();
     let lines = mesh.indices.len(); // one line per vertex of each triangle
     let bytes = lines * 2 * 12;
-    unsafe {
-        // A draw needs a complete framebuffer, even with the rasterizer off
-        // (the headless context has none of its own).
-        let fbo = gl.create_framebuffer().unwrap();
-        let rb = gl.create_renderbuffer().unwrap();
-        gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
-        gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, 1, 1);
-        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-        gl.framebuffer_renderbuffer(
-            glow::FRAMEBUFFER,
-            glow::COLOR_ATTACHMENT0,
-            glow::RENDERBUFFER,
-            Some(rb),
-        );
-        let buffer = gl.create_buffer().unwrap();
-        gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, Some(buffer));
-        gl.buffer_data_size(
-            glow::TRANSFORM_FEEDBACK_BUFFER,
-            bytes as i32,
-            glow::STATIC_READ,
-        );
-        gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, Some(buffer));
-        p.use_program();
+    let set = |p: &Program| {
         p.set_mat4("u_model", &model);
         p.set_mat3(
             "u_normal_matrix",
@@ -55,35 +33,13 @@ fn captured(ctx: &gloss::gl::Headless, mesh: &MeshData, model: Mat4, length: f32
         );
         p.set_mat4("u_view_projection", &Mat4::IDENTITY);
         p.set_f32("u_length", length);
-        gl.enable(glow::RASTERIZER_DISCARD);
-        gl.begin_transform_feedback(glow::LINES);
+    };
+    let floats = common::capture_feedback(gl, &p, glow::LINES, bytes, set, |gl| unsafe {
         gl.bind_vertex_array(Some(m.vao));
         gl.draw_elements(glow::TRIANGLES, m.index_count, glow::UNSIGNED_INT, 0);
         gl.bind_vertex_array(None);
-        gl.end_transform_feedback();
-        gl.disable(glow::RASTERIZER_DISCARD);
-        assert_eq!(
-            gl.get_error(),
-            glow::NO_ERROR,
-            "the capture raised a GL error"
-        );
-        let mut out = vec![0u8; bytes];
-        gl.get_buffer_sub_data(glow::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
-        gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, None);
-        gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, None);
-        gl.delete_buffer(buffer);
-        gl.use_program(None);
-        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-        gl.delete_framebuffer(fbo);
-        gl.bind_renderbuffer(glow::RENDERBUFFER, None);
-        gl.delete_renderbuffer(rb);
-        out.chunks_exact(12)
-            .map(|c| {
-                let f = |k: usize| f32::from_le_bytes(c[4 * k..4 * k + 4].try_into().unwrap());
-                Vec3::new(f(0), f(1), f(2))
-            })
-            .collect()
-    }
+    });
+    floats.chunks_exact(3).map(Vec3::from_slice).collect()
 }
 
 #[test]

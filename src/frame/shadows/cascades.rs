@@ -6,14 +6,16 @@
 
 use super::{CASCADED, LightView};
 use crate::frame::shadows::Caster;
+use crate::frame::unit_check::{self, UnitsNeeded};
 use crate::gl::Gl;
 use crate::gl::buffer::Buffer;
 use crate::gl::depth_map::DepthMap;
+use crate::gl::texture_units;
 use crate::math::cascades;
 use crate::math::shadow as matrices;
 use crate::scene::shadows::MAX_CASCADES;
 use crate::scene::{Camera, Shadow};
-use anyhow::{Result, bail};
+use anyhow::Result;
 use glam::{Vec3, Vec4};
 use glow::HasContext;
 
@@ -64,17 +66,14 @@ pub(super) fn light_view(
     })
 }
 
-/// The texture units a cascaded map needs against what this GL has.
-pub(super) fn check_units(gl: &Gl) -> Result<()> {
-    let have = unsafe { gl.get_parameter_i32(glow::MAX_TEXTURE_IMAGE_UNITS) };
-    if have <= UNIT_CASCADES as i32 {
-        bail!(
-            "a directional light's cascades (shadow.cascades > 1) are read from texture unit \
-             {UNIT_CASCADES}, but this GL has {have} fragment texture units: set shadow.cascades = 1"
-        );
-    }
-    Ok(())
-}
+/// The texture unit a cascaded map needs, and what `check_units` says
+/// on a GL without it.
+pub(super) const UNITS: UnitsNeeded = UnitsNeeded {
+    key: "shadow.cascades > 1",
+    reads: "a directional light's cascades",
+    units: &[UNIT_CASCADES],
+    instead: "set shadow.cascades = 1",
+};
 
 /// Whether `scene`'s lighting programs read the cascades: a light
 /// cascades, or the general shader (render.specialize off) has the lookup.
@@ -107,7 +106,8 @@ pub(super) struct CascadeBlock {
 impl CascadeBlock {
     pub(super) fn new(gl: &Gl) -> Result<CascadeBlock> {
         let ubo = Buffer::new(gl, glow::UNIFORM_BUFFER, BLOCK_SIZE, glow::DYNAMIC_DRAW)?;
-        let empty = match check_units(gl) {
+        let have = unit_check::fragment_units(gl);
+        let empty = match unit_check::units_fit(have, &UNITS) {
             Ok(()) => Some(DepthMap::new_array(gl, 1, 1)?),
             Err(_) => None,
         };
@@ -158,13 +158,11 @@ impl CascadeBlock {
         if !self.needed {
             return;
         }
-        unsafe {
-            if let Some(e) = &self.empty {
-                gl.active_texture(glow::TEXTURE0 + UNIT_CASCADES);
-                gl.bind_texture(glow::TEXTURE_2D_ARRAY, Some(e.texture));
-            }
-            gl.bind_buffer_base(glow::UNIFORM_BUFFER, CASCADES_BINDING, Some(self.ubo.id));
+        if let Some(e) = &self.empty {
+            let array = glow::TEXTURE_2D_ARRAY;
+            texture_units::bind_one(gl, UNIT_CASCADES, array, Some(e.texture));
         }
+        unsafe { gl.bind_buffer_base(glow::UNIFORM_BUFFER, CASCADES_BINDING, Some(self.ubo.id)) };
     }
 
     /// The block alone, for a pass that reads the cascades' ranges and no
@@ -178,12 +176,9 @@ impl CascadeBlock {
         if !self.needed {
             return;
         }
-        unsafe {
-            if self.empty.is_some() {
-                gl.active_texture(glow::TEXTURE0 + UNIT_CASCADES);
-                gl.bind_texture(glow::TEXTURE_2D_ARRAY, None);
-            }
-            gl.bind_buffer_base(glow::UNIFORM_BUFFER, CASCADES_BINDING, None);
+        if self.empty.is_some() {
+            texture_units::bind_one(gl, UNIT_CASCADES, glow::TEXTURE_2D_ARRAY, None);
         }
+        unsafe { gl.bind_buffer_base(glow::UNIFORM_BUFFER, CASCADES_BINDING, None) };
     }
 }

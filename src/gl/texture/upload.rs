@@ -3,7 +3,7 @@
 
 use super::{Sampling, Texture, set_sampling};
 use crate::gl::Gl;
-use anyhow::{Result, anyhow, bail};
+use anyhow::{Result, bail};
 use glow::{HasContext, PixelUnpackData};
 
 impl Texture {
@@ -24,10 +24,7 @@ impl Texture {
         }
         let bytes: Vec<u8> = rgb.iter().flat_map(|f| f.to_le_bytes()).collect();
         unsafe {
-            let id = gl
-                .create_texture()
-                .map_err(|e| anyhow!("glGenTextures: {e}"))?;
-            crate::gl::live::made(crate::gl::live::Kind::Texture);
+            let id = crate::gl::live::new_texture(gl)?;
             gl.bind_texture(glow::TEXTURE_2D, Some(id));
             gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
             gl.tex_image_2d(

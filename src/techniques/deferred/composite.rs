@@ -34,6 +34,7 @@ use crate::frame::plan::Pass;
 use crate::frame::post::world_target;
 use crate::frame::shadows;
 use crate::frame::targets::{LIGHT_ACCUMULATION, TargetDesc};
+use crate::frame::technique::LaterPrograms;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
@@ -42,6 +43,7 @@ use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 use glam::Mat4;
 use glow::HasContext;
+use std::cell::OnceCell;
 
 pub const COMPOSITE: Technique = Technique {
     name: "composite",
@@ -97,15 +99,24 @@ fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
     vec![]
 }
 
+/// The composite's shaders.
+const STAGES: [(u32, &str); 2] = [
+    (glow::VERTEX_SHADER, "common/fullscreen.vert"),
+    (glow::FRAGMENT_SHADER, "deferred/composite.frag"),
+];
+
 struct Composite {
-    /// The programs, by [`variant`]: writing the G-buffer's depth into the
-    /// output (gl_FragDepth, for the passes that draw after it) or colour
-    /// only (the output has no depth buffer: nothing after the composite
-    /// tests depth; a shader that writes gl_FragDepth costs more per pixel
-    /// even when its depth goes nowhere); tinting each pixel by its cascade
-    /// (shadow.cascade_colors) or not; writing linear light for GL to
-    /// encode (HARDWARE_SRGB) or encoding in the shader.
-    programs: Vec<Program>,
+    build: LaterPrograms,
+    /// The programs, by [`variant`], each built the first frame that needs
+    /// it (a scene's frames need one or two of the eight): writing the
+    /// G-buffer's depth into the output (gl_FragDepth, for the passes that
+    /// draw after it) or colour only (the output has no depth buffer:
+    /// nothing after the composite tests depth; a shader that writes
+    /// gl_FragDepth costs more per pixel even when its depth goes nowhere);
+    /// tinting each pixel by its cascade (shadow.cascade_colors) or not;
+    /// writing linear light for GL to encode (HARDWARE_SRGB) or encoding
+    /// in the shader.
+    programs: [OnceCell<Program>; 8],
 }
 
 /// Which of the composite's programs: depth written, cascade tints, sRGB by GL.
@@ -113,13 +124,29 @@ fn variant(depth: bool, tints: bool, hardware: bool) -> usize {
     usize::from(depth) * 4 + usize::from(tints) * 2 + usize::from(hardware)
 }
 
+/// The variant `f`'s output needs: (depth written, cascade tints, sRGB by GL).
+fn needs(f: &Frame) -> (bool, bool, bool) {
+    let output = f.targets.get(world_target(f.scene));
+    let depth = output.depth_stencil.is_some() || output.shared_depth.is_some();
+    let tints = shadows::cascade_tints(f.scene);
+    // GL encodes where the output is sRGB and wants encoded values.
+    let srgb = output.colors[0].internal_format == glow::SRGB8_ALPHA8;
+    (depth, tints, f.uniforms.output_srgb && srgb)
+}
+
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let stages = [
-        (glow::VERTEX_SHADER, "common/fullscreen.vert"),
-        (glow::FRAGMENT_SHADER, "deferred/composite.frag"),
-    ];
-    let mut programs = Vec::with_capacity(8);
-    for i in 0..8 {
+    Ok(Box::new(Composite {
+        build: p.later(),
+        programs: Default::default(),
+    }))
+}
+
+impl Composite {
+    /// Variant `i`'s program, built now if no frame has needed it yet.
+    fn program(&self, i: usize) -> Result<&Program> {
+        if let Some(p) = self.programs[i].get() {
+            return Ok(p);
+        }
         let (depth, tints, hardware) = (i & 4 != 0, i & 2 != 0, i & 1 != 0);
         let defines: Vec<(&str, String)> = [
             (depth, "WRITE_DEPTH"),
@@ -130,24 +157,29 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         .filter(|(on, _)| *on)
         .map(|(_, name)| (name, "1".to_string()))
         .collect();
-        let program = p.build_with(&stages, &defines)?;
+        let program = self.build.build_with(&STAGES, &defines)?;
         if tints {
             program.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);
         }
-        programs.push(program);
+        Ok(self.programs[i].get_or_init(|| program))
     }
-    Ok(Box::new(Composite { programs }))
 }
 
 impl RunPasses for Composite {
+    fn prepare(&self, _: &Pass, f: &Frame) -> Result<()> {
+        let (depth, tints, hardware) = needs(f);
+        self.program(variant(depth, tints, hardware)).map(|_| ())
+    }
+
     fn run(&self, _: &Pass, f: &Frame) {
         let output = f.targets.get(world_target(f.scene));
-        let depth = output.depth_stencil.is_some() || output.shared_depth.is_some();
-        let tints = shadows::cascade_tints(f.scene);
+        let (depth, tints, hardware) = needs(f);
         let (gl, u) = (f.gl, f.uniforms);
-        // GL encodes where the output is sRGB and wants encoded values.
-        let hardware = u.output_srgb && output.colors[0].internal_format == glow::SRGB8_ALPHA8;
-        let p = &self.programs[variant(depth, tints, hardware)];
+        // Built by `prepare`, which the renderer calls first.
+        let p = match self.program(variant(depth, tints, hardware)) {
+            Ok(p) => p,
+            Err(e) => return eprintln!("warning: the composite did not run: {e:#}"),
+        };
         // A frame with no lights has no lighting pass and no light to add.
         let light = f.targets.find(LIGHT_ACCUMULATION);
         unsafe {

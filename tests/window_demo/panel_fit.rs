@@ -3,7 +3,8 @@
 //! test's always) wraps inside it rather than running past the edge, where
 //! a student cannot click it (src/demo/panel/knob.rs). Checked on the
 //! panel's layout (`GLOSS_DEMO_LAYOUT`, src/demo/layout.rs) over technique
-//! scenes that together show every knob of the registry, at the window's
+//! scenes that together show every knob of the registry and every kind of
+//! post-chain entry, at the window's
 //! default size; then the depth-peeling and steep-parallax choices are
 //! clicked by name and the view compared with `gloss render --set` of the
 //! same setting.
@@ -87,10 +88,13 @@ fn panel_knobs(scene: &Scene) -> Vec<&'static Knob> {
 }
 
 /// Technique scenes (the registry's, in its order) that together show
-/// every knob any of them shows: each scene kept when it shows a knob
-/// the ones before it did not. With the knobs each one adds.
+/// every knob any of them shows and every kind of post-chain entry (each
+/// kind has its own widgets, src/demo/panel/post_params.rs): each scene
+/// kept when it shows one the ones before it did not. With the knobs each
+/// one adds.
 fn scenes_showing_every_knob() -> Vec<(&'static str, Vec<&'static Knob>)> {
     let mut seen: Vec<&str> = Vec::new();
+    let mut posts = Vec::new();
     let mut out = Vec::new();
     for t in gloss::techniques::ALL {
         let scene = Scene::load(&crate_dir().join(t.scene))
@@ -98,8 +102,11 @@ fn scenes_showing_every_knob() -> Vec<(&'static str, Vec<&'static Knob>)> {
         let new: Vec<&Knob> = (panel_knobs(&scene).into_iter())
             .filter(|k| !seen.contains(&k.key))
             .collect();
-        if !new.is_empty() && !out.iter().any(|(s, _)| *s == t.scene) {
+        let kinds: Vec<_> = scene.post.iter().map(std::mem::discriminant).collect();
+        let new_post = kinds.iter().any(|k| !posts.contains(k));
+        if (!new.is_empty() || new_post) && !out.iter().any(|(s, _)| *s == t.scene) {
             seen.extend(new.iter().map(|k| k.key));
+            posts.extend(kinds);
             out.push((t.scene, new));
         }
     }
@@ -148,7 +155,7 @@ fn clipped(layout: &str) -> Vec<String> {
 }
 
 #[test]
-fn every_widget_of_the_panel_lies_inside_it_in_scenes_that_show_every_knob() {
+fn every_widget_of_the_panel_lies_inside_it_in_scenes_that_show_every_knob_and_post_entry() {
     let scenes = scenes_showing_every_knob();
     // Several windows, each in its own Xvfb run, so that each run stays
     // well inside its time limit on a loaded machine.

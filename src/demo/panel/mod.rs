@@ -319,7 +319,10 @@ impl PanelState {
 /// A text field named `name` filling the row, and `button` at its right
 /// end (inside the panel at any width); true when the button was clicked.
 fn field_and_button(ui: &mut egui::Ui, text: &mut String, name: &str, button: &str) -> bool {
-    ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+    // One row high: a layout of the whole height would centre the row in it.
+    let row = egui::vec2(ui.available_width(), ui.spacing().interact_size.y);
+    let layout = egui::Layout::right_to_left(egui::Align::Center);
+    ui.allocate_ui_with_layout(row, layout, |ui| {
         let clicked = ui.button(button).clicked();
         let field = egui::TextEdit::singleline(text).desired_width(f32::INFINITY);
         ui.add(field).accessible_name(name);

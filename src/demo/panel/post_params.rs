@@ -23,11 +23,11 @@ pub fn bloom(ui: &mut egui::Ui, i: usize, b: &mut Bloom) -> bool {
     );
     let taps = [Taps::Direct, Taps::Linear];
     changed |= combo(ui, ("bloom taps", i), "taps", &mut b.taps, taps, Taps::name);
-    // The slider after its label, on the next line when the panel is narrow.
+    // The slider's words after it, on the next line when the panel is narrow.
     ui.horizontal_wrapped(|ui| {
+        let r = ui.add(egui::Slider::new(&mut b.radius_scale, 0.05..=1.0));
         let label = ui.label("radius scale (fewer taps)");
-        let cut = egui::Slider::new(&mut b.radius_scale, 0.05..=1.0);
-        changed |= ui.add(cut).labelled_by(label.id).changed();
+        changed |= r.labelled_by(label.id).changed();
     });
     egui::Grid::new(("bloom levels", i)).show(ui, |ui| {
         ui.label("blur");

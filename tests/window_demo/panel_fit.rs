@@ -230,6 +230,7 @@ fn click_and_render(
         start {scene}
         sleep 2
         key F12; shot 1
+        widget "{word}" "{about}" > unscrolled
         scroll_to "{word}" "{about}" > rect
         click_widget "{word}" "{about}"
         toggled "{word}" "{about}" > toggled
@@ -241,18 +242,22 @@ fn click_and_render(
     let (dir, log) = drive(name, "1280x1024x24", &script)?;
     let read = |f: &str| std::fs::read_to_string(dir.join(f)).unwrap_or_default();
     assert_eq!(read("toggled").trim(), "true", "{word} is not selected");
-    // Brought into view, the choice lies inside the panel's scrolling part.
+    // Brought into view, the choice lies inside the panel's scrolling part,
+    // where it was before: the wheel scrolled the panel down, not sideways.
     let layout = read("layout.jsonl");
     let scroll = crate::layout_rect(&layout, "panel scroll").unwrap();
-    let r: Vec<i64> = read("rect")
-        .split_whitespace()
-        .map(|v| v.parse().unwrap())
-        .collect();
+    let rect = |f: &str| -> Vec<i64> {
+        let v = read(f);
+        v.split_whitespace().map(|v| v.parse().unwrap()).collect()
+    };
+    let (r, r0) = (rect("rect"), rect("unscrolled"));
     assert!(
-        r[0] >= scroll[0] && r[2] <= scroll[2],
-        "{word} at x {}..{} runs past the panel ({}..{})",
+        r[0] >= scroll[0] && r[2] <= scroll[2] && (r[0], r[2]) == (r0[0], r0[2]),
+        "{word} at x {}..{} (before scrolling {}..{}): the panel shows {}..{}",
         r[0],
         r[2],
+        r0[0],
+        r0[2],
         scroll[0],
         scroll[2]
     );

@@ -227,7 +227,11 @@ impl Demo {
                 ("panel", "panel", run.panel.rect),
             ]
             .into_iter()
-            .chain([("panel scroll", "scroll area", run.panel.scroll)])
+            .chain([
+                ("panel scroll", "scroll area", run.panel.scroll),
+                ("panel content", "content", run.panel.content),
+                ("thumbnail strip", "scroll area", run.panel.strip),
+            ])
             .filter_map(|(l, k, r)| Some((l, k, r?)))
             .collect::<Vec<_>>();
             layout.write(ppp, (w, h), &areas)?;

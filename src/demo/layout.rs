@@ -15,10 +15,12 @@
 //! `rect` in window pixels from the top left (egui points times the pixels
 //! per point). The names are egui's accessibility tree (AccessKit), which
 //! egui fills as it makes each widget: a button or header its text, a knob's
-//! control the knob's label (src/demo/panel/knob.rs names them). Three lines
+//! control the knob's label (src/demo/panel/knob.rs names them). Five lines
 //! name the demo's own areas: "panel" (kind "panel"), "panel scroll" (kind
-//! "scroll area": the part of the panel that scrolls and shows its widgets)
-//! and "3D view" (kind "view").
+//! "scroll area": the part of the panel that scrolls and shows its widgets),
+//! "panel content" (kind "content": all that it holds, from its top left),
+//! "thumbnail strip" (kind "scroll area": the inspector's, which scrolls
+//! sideways on its own) and "3D view" (kind "view").
 
 use egui::accesskit::{Node, NodeId, Role, Toggled, TreeUpdate};
 use std::collections::HashMap;

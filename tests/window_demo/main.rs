@@ -10,6 +10,7 @@
 mod area_lights;
 mod input;
 mod layout;
+mod panel_fit;
 mod pictures;
 mod probe;
 mod strip;

@@ -64,30 +64,36 @@ fn skin_controls(
     scene: &crate::scene::Scene,
     actions: &mut Vec<Action>,
 ) {
-    use crate::scene::SkinMethod;
     let mut skin = scene.objects[i].skin.clone().unwrap();
     let before = (skin.method, skin.clip);
-    ui.horizontal(|ui| {
-        ui.label(&scene.objects[i].name);
-        egui::ComboBox::from_id_salt(("skinning", i))
-            .selected_text(skin.method.name())
-            .show_ui(ui, |ui| {
-                for &m in SkinMethod::ALL {
-                    ui.selectable_value(&mut skin.method, m, m.name());
-                }
-            });
-        egui::ComboBox::from_id_salt(("clip", i))
-            .selected_text(skin.clip_name().to_owned())
-            .show_ui(ui, |ui| {
-                ui.selectable_value(&mut skin.clip, None, "rest pose");
-                for (c, clip) in skin.mesh.clips.iter().enumerate() {
-                    ui.selectable_value(&mut skin.clip, Some(c), clip.name.as_str());
-                }
-            });
+    // Wrapped at the panel's edge; the two drop-downs named by the object.
+    ui.horizontal_wrapped(|ui| {
+        let label = ui.label(&scene.objects[i].name);
+        ui.label_inputs_by(label.id, |ui| skin_menus(ui, i, &mut skin));
     });
     if (skin.method, skin.clip) != before {
         actions.push(Action::Skin(i, skin));
     }
+}
+
+/// The skinning method's and the clip's drop-downs.
+fn skin_menus(ui: &mut egui::Ui, i: usize, skin: &mut crate::scene::skins::ObjectSkin) {
+    use crate::scene::SkinMethod;
+    egui::ComboBox::from_id_salt(("skinning", i))
+        .selected_text(skin.method.name())
+        .show_ui(ui, |ui| {
+            for &m in SkinMethod::ALL {
+                ui.selectable_value(&mut skin.method, m, m.name());
+            }
+        });
+    egui::ComboBox::from_id_salt(("clip", i))
+        .selected_text(skin.clip_name().to_owned())
+        .show_ui(ui, |ui| {
+            ui.selectable_value(&mut skin.clip, None, "rest pose");
+            for (c, clip) in skin.mesh.clips.iter().enumerate() {
+                ui.selectable_value(&mut skin.clip, Some(c), clip.name.as_str());
+            }
+        });
 }
 
 #[cfg(test)]

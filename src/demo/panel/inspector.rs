@@ -39,7 +39,8 @@ impl PanelState {
                     .accessible_name("inspector view");
                 ui.checkbox(&mut self.thumbnails, "thumbnails (click one to view it)");
                 if self.thumbnails {
-                    egui::ScrollArea::horizontal().show(ui, |ui| {
+                    let strip = ui.scope(|ui| {
+                        egui::ScrollArea::horizontal().show(ui, |ui| {
                         ui.horizontal(|ui| {
                             for (i, t) in input.thumbnails.iter().enumerate() {
                                 let Some(t) = t else { continue };
@@ -54,7 +55,9 @@ impl PanelState {
                                 }
                             }
                         });
+                        });
                     });
+                    self.strip = Some(strip.response.rect);
                 }
                 ui.add(
                     egui::Slider::new(&mut self.exposure, 0.01..=100.0)

@@ -1,5 +1,7 @@
 //! One control per knob (src/scene/knobs.rs): a checkbox, a slider, a row
-//! of choices or three numbers and a colour picker for a colour.
+//! of choices or three numbers and a colour picker for a colour. The row
+//! wraps at the panel's edge, so that every choice of a long list stays in
+//! the panel at any width (tests/window_demo/panel_fit.rs).
 
 use crate::scene::RenderSettings;
 use crate::scene::knobs::{Kind, Knob, Value};
@@ -8,7 +10,7 @@ use crate::scene::knobs::{Kind, Knob, Value};
 pub fn show(ui: &mut egui::Ui, k: &Knob, settings: &mut RenderSettings) -> bool {
     let before = (k.get)(settings);
     let mut after = before;
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let label = ui
             .label(k.label)
             .on_hover_text(format!("{}\n{}", k.key, k.help));

@@ -148,6 +148,12 @@ pub struct PanelState {
     /// its last drawing; None while hidden.
     pub rect: Option<egui::Rect>,
     pub scroll: Option<egui::Rect>,
+    /// The size of all that the scrolling part holds (points), from its
+    /// top left: wider than `scroll` when something runs past the edge.
+    pub content: Option<egui::Rect>,
+    /// The inspector's thumbnail strip, which scrolls sideways on its own
+    /// (points), at its last drawing; None while not drawn.
+    pub strip: Option<egui::Rect>,
     /// The probe's magnifier, kept until the panel is drawn again.
     magnifier: Option<egui::TextureHandle>,
     path_text: String,
@@ -177,6 +183,8 @@ impl PanelState {
             probe_follow: false,
             rect: None,
             scroll: None,
+            content: None,
+            strip: None,
             magnifier: None,
             path_text: scene_path.to_string(),
             save_text: "edited.toml".into(),
@@ -188,7 +196,8 @@ impl PanelState {
     pub fn show(&mut self, ui: &mut egui::Ui, input: &PanelInput) -> Vec<Action> {
         let mut actions = Vec::new();
         self.drawn = egui::Rect::NOTHING;
-        (self.rect, self.scroll) = (None, None);
+        (self.rect, self.scroll, self.content) = (None, None, None);
+        self.strip = None;
         if self.help
             && let Some(r) = help_window(ui, &mut self.help)
         {
@@ -227,6 +236,10 @@ impl PanelState {
                         .show(ui, keys_grid);
                 });
                 self.scroll = Some(scroll.inner_rect);
+                self.content = Some(egui::Rect::from_min_size(
+                    scroll.inner_rect.min,
+                    scroll.content_size,
+                ));
             });
         self.drawn = self.drawn.union(panel.response.rect);
         self.rect = Some(panel.response.rect);
@@ -249,21 +262,13 @@ impl PanelState {
                             }
                         }
                     });
-                ui.horizontal(|ui| {
-                    ui.text_edit_singleline(&mut self.path_text)
-                        .accessible_name("scene path");
-                    if ui.button("open").clicked() {
-                        actions.push(Action::Load(PathBuf::from(self.path_text.trim())));
-                    }
-                });
-                ui.horizontal(|ui| {
-                    ui.text_edit_singleline(&mut self.save_text)
-                        .accessible_name("file to save as");
-                    if ui.button("save as").clicked() {
-                        actions.push(Action::SaveAs(PathBuf::from(self.save_text.trim())));
-                    }
-                });
-                ui.horizontal(|ui| {
+                if field_and_button(ui, &mut self.path_text, "scene path", "open") {
+                    actions.push(Action::Load(PathBuf::from(self.path_text.trim())));
+                }
+                if field_and_button(ui, &mut self.save_text, "file to save as", "save as") {
+                    actions.push(Action::SaveAs(PathBuf::from(self.save_text.trim())));
+                }
+                ui.horizontal_wrapped(|ui| {
                     if ui.button("reload (F5)").clicked() {
                         actions.push(Action::Reload);
                     }
@@ -309,6 +314,21 @@ impl PanelState {
                 }
             });
     }
+}
+
+/// A text field named `name` filling the row, and `button` at its right
+/// end (inside the panel at any width); true when the button was clicked.
+fn field_and_button(ui: &mut egui::Ui, text: &mut String, name: &str, button: &str) -> bool {
+    // One row high: a layout of the whole height would centre the row in it.
+    let row = egui::vec2(ui.available_width(), ui.spacing().interact_size.y);
+    let layout = egui::Layout::right_to_left(egui::Align::Center);
+    ui.allocate_ui_with_layout(row, layout, |ui| {
+        let clicked = ui.button(button).clicked();
+        let field = egui::TextEdit::singleline(text).desired_width(f32::INFINITY);
+        ui.add(field).accessible_name(name);
+        clicked
+    })
+    .inner
 }
 
 /// The lighting path, then every registered technique: those in this frame

@@ -30,7 +30,7 @@ pub fn section(ui: &mut egui::Ui, input: &PanelInput, actions: &mut Vec<Action>)
         .default_open(true)
         .show(ui, |ui| {
             let mut form = scene.render.post_chain;
-            ui.horizontal(|ui| {
+            ui.horizontal_wrapped(|ui| {
                 ui.label("form");
                 for (f, word) in [
                     (ChainForm::PingPong, "ping-pong (two textures)"),

@@ -23,8 +23,12 @@ pub fn bloom(ui: &mut egui::Ui, i: usize, b: &mut Bloom) -> bool {
     );
     let taps = [Taps::Direct, Taps::Linear];
     changed |= combo(ui, ("bloom taps", i), "taps", &mut b.taps, taps, Taps::name);
-    let cut = egui::Slider::new(&mut b.radius_scale, 0.05..=1.0).text("radius scale (fewer taps)");
-    changed |= ui.add(cut).changed();
+    // The slider's words after it, on the next line when the panel is narrow.
+    ui.horizontal_wrapped(|ui| {
+        let r = ui.add(egui::Slider::new(&mut b.radius_scale, 0.05..=1.0));
+        let label = ui.label("radius scale (fewer taps)");
+        changed |= r.labelled_by(label.id).changed();
+    });
     egui::Grid::new(("bloom levels", i)).show(ui, |ui| {
         ui.label("blur");
         ui.label("sigma (pixels)");
@@ -43,7 +47,7 @@ pub fn bloom(ui: &mut egui::Ui, i: usize, b: &mut Bloom) -> bool {
             ui.end_row();
         }
     });
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label("weights");
         for (k, w) in b.weights.iter_mut().enumerate() {
             let name = match k {

@@ -257,7 +257,7 @@ pub fn billboards(
     let (mut list, mut fields) = (scene.billboard_list.clone(), scene.billboard_fields.clone());
     let mut changed = false;
     let kind = |ui: &mut egui::Ui, k: &mut BillboardKind| {
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             ui.label("kind");
             let mut c = false;
             for (v, w) in BillboardKind::ALL.iter().zip(BillboardKind::WORDS) {

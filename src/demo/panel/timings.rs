@@ -52,31 +52,38 @@ impl Timings {
                 } else {
                     "clock: CPU around glFinish after each pass (this driver's timer queries under-report)"
                 });
-                egui::Grid::new("pass-times").striped(true).show(ui, |ui| {
-                    for (i, (name, ms)) in times.passes.iter().enumerate() {
-                        // Named as the plan of the frame they timed named them.
-                        match times.titles.get(i) {
-                            Some(title) => ui.label(title),
-                            None if times.passes.len() == plan.passes.len() => {
-                                ui.label(plan.title(i))
-                            }
-                            None => ui.label(*name),
-                        };
-                        ui.monospace(format!("{ms:8.2} ms"));
-                        if gpu {
-                            ui.monospace(format!("GPU {:8.2} ms", times.gpu[i]));
+                // The times first, in fixed-width columns, then what the
+                // pass draws, wrapped at the panel's edge.
+                let row = |ui: &mut egui::Ui, times: &[String], what: egui::RichText| {
+                    ui.horizontal(|ui| {
+                        for t in times {
+                            ui.monospace(t);
                         }
-                        ui.end_row();
+                        ui.add(egui::Label::new(what).wrap());
+                    });
+                };
+                for (i, (name, ms)) in times.passes.iter().enumerate() {
+                    // Named as the plan of the frame they timed named them.
+                    let title = match times.titles.get(i) {
+                        Some(title) => title.clone(),
+                        None if times.passes.len() == plan.passes.len() => plan.title(i),
+                        None => name.to_string(),
+                    };
+                    let mut columns = vec![format!("{ms:8.2} ms")];
+                    if gpu {
+                        columns.push(format!("GPU {:8.2} ms", times.gpu[i]));
                     }
-                    ui.strong("renderer");
-                    ui.monospace(format!("{:8.2} ms", times.frame_ms));
-                    ui.end_row();
-                    if let Some(m) = self.median() {
-                        ui.strong("frame (median)");
-                        ui.monospace(format!("{m:8.2} ms  {:.1} fps", 1000.0 / m.max(1e-3)));
-                        ui.end_row();
-                    }
-                });
+                    row(ui, &columns, title.into());
+                }
+                row(
+                    ui,
+                    &[format!("{:8.2} ms", times.frame_ms)],
+                    egui::RichText::new("renderer").strong(),
+                );
+                if let Some(m) = self.median() {
+                    let columns = [format!("{m:8.2} ms  {:.1} fps", 1000.0 / m.max(1e-3))];
+                    row(ui, &columns, egui::RichText::new("frame (median)").strong());
+                }
                 if let Some(c) = &times.culling {
                     ui.label(format!(
                         "frustum culling: {} of {} opaque objects drawn, {} culled ({} tests)",

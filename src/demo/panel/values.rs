@@ -31,7 +31,7 @@ pub fn lights(ui: &mut egui::Ui, scene: &Scene) -> Option<Vec<crate::scene::Ligh
                 egui::CollapsingHeader::new(format!("light {i}: {kind}"))
                     .id_salt(("light", i))
                     .show(ui, |ui| {
-                        ui.horizontal(|ui| {
+                        ui.horizontal_wrapped(|ui| {
                             ui.label("type");
                             for (k, word) in [
                                 (LightKind::Directional, "directional"),

@@ -238,13 +238,17 @@ def main():
                 for s, p, o, n in rows:
                     if verdict(o, n, a.min_ratio, a.min_ms):
                         flagged.setdefault(s, []).append(p)
-                reruns = {}
+                # One rerun per set of arguments (deferred's two forms share one).
+                groups = {}
                 for s in flagged:
                     print(f"  rerun {s}: {', '.join(flagged[s])}", file=sys.stderr)
-                    rargs = rerun_args(args, s)
-                    tag = "rerun-" + "".join(c if c.isalnum() else "_" for c in s)
-                    rr = measure(binaries, scene, rargs, a.rerun_frames, a.warmup, a.rerun_reps, work, tag, a.timeout)
-                    reruns[s] = {"args": rargs, "rows": [r for r in rows_of(rr) if r[0] == s]}
+                    groups.setdefault(tuple(rerun_args(args, s)), []).append(s)
+                reruns = {}
+                for rargs, settings in groups.items():
+                    tag = "rerun-" + "".join(c if c.isalnum() else "_" for c in settings[0])
+                    rr = measure(binaries, scene, list(rargs), a.rerun_frames, a.warmup, a.rerun_reps, work, tag, a.timeout)
+                    for s in settings:
+                        reruns[s] = {"args": list(rargs), "rows": [r for r in rows_of(rr) if r[0] == s]}
                 entry["jobs"] = [x for x in entry["jobs"] if x["job"] != job]
                 entry["jobs"].append({
                     "job": job,

@@ -128,6 +128,36 @@ def measure(binaries, scene, args, frames, warmup, reps, work, tag, timeout):
     return runs
 
 
+def pair_renamed(old, new):
+    """A pass renamed since: the old "shadow map" is today's "shadow map
+    (light 2)", or the sum of a cube's six "shadow map (light 0, face +X)"
+    passes. An old-only pass meets the sum of the new-only passes whose
+    name is its own followed by " (" (the old binary summed passes of one
+    name in a frame). `old` and `new`: {(setting, pass): [ms per run]}."""
+    for s, p in [k for k in old if k not in new]:
+        parts = [k for k in new if k[0] == s and k[1].startswith(p + " (") and k not in old]
+        if parts and len({len(new[k]) for k in parts}) == 1:
+            label = parts[0][1] if len(parts) == 1 else f"{p} (sum of {len(parts)})"
+            new[(s, f"{p} → {label}")] = [sum(v) for v in zip(*(new[k] for k in parts))]
+            old[(s, f"{p} → {label}")] = old.pop((s, p))
+            for k in parts:
+                del new[k]
+
+
+def paired(rows):
+    """Stored rows with pair_renamed applied, in the order of the settings."""
+    old = {(s, p): o for s, p, o, n in rows if o}
+    new = {(s, p): n for s, p, o, n in rows if n}
+    pair_renamed(old, new)
+    order = []
+    for s, p, o, n in rows:
+        if s not in order:
+            order.append(s)
+    keys = [k for k in dict.fromkeys(list(old) + list(new))]
+    keys.sort(key=lambda k: order.index(k[0]))
+    return [(s, p, old.get((s, p), []), new.get((s, p), [])) for s, p in keys]
+
+
 def rows_of(runs):
     """[(setting, pass, [old ms...], [new ms...])] for the settings and passes
     in either binary's runs."""
@@ -140,6 +170,7 @@ def rows_of(runs):
         return d
 
     old, new = collect("old"), collect("new")
+    pair_renamed(old, new)
     keys = []
     for k in list(old) + list(new):
         if k not in keys:
@@ -295,7 +326,7 @@ def render(state, a):
                 body.append(f"\n{j['job']}: the old binary cannot run it: `{j['errors']['old'][0]}`\n")
             if j["errors"]["new"]:
                 body.append(f"\n{j['job']}: the new binary failed: `{j['errors']['new'][0]}`\n")
-            rows = [r for r in j["rows"] if r[2] or r[3]]
+            rows = [r for r in paired(j["rows"]) if r[2] or r[3]]
             if not rows or j["errors"]["old"]:
                 continue
             body.append(
@@ -308,7 +339,7 @@ def render(state, a):
                 ratio = statistics.median(n) / statistics.median(o) if o and n and statistics.median(o) > 0 else None
                 flag = verdict(o, n, args["min_ratio"], args["min_ms"])
                 if flag and s in j["reruns"]:
-                    rr = {(rs, rp): (ro, rn) for rs, rp, ro, rn in j["reruns"][s]["rows"]}
+                    rr = {(rs, rp): (ro, rn) for rs, rp, ro, rn in paired(j["reruns"][s]["rows"])}
                     if (s, p) in rr:
                         ro, rn = rr[(s, p)]
                         again = verdict(ro, rn, args["min_ratio"], args["min_ms"])
@@ -322,6 +353,8 @@ def render(state, a):
                             slower.append((e["name"], s, p, fmt_ms(ro), fmt_ms(rn), rratio))
                     else:
                         flag = "rerun has no such pass"
+                if flag == "slower?":
+                    flag = "slower? (not rerun alone)"
                 if not o:
                     flag = "new only"
                     only.append((e["name"], s, p, "new"))

@@ -289,6 +289,9 @@ def main():
                     "reruns": reruns,
                     "frames": a.frames,
                     "reps": a.reps,
+                    "min_ratio": a.min_ratio,
+                    "min_ms": a.min_ms,
+                    "rerun": [a.rerun_frames, a.rerun_reps],
                     "load": open("/proc/loadavg").read().split()[:3],
                 })
                 entry["jobs"].sort(key=lambda x: x["job"] != "own path")
@@ -310,10 +313,9 @@ def render(state, a):
     args = state["args"]
     loads = ", ".join("/".join(l) for l in state["loads"])
     out.append(
-        f"Load averages (1/5/15 min) at the start and end of each sitting: {loads}. "
-        f"A flagged row is rerun alone with {args['rerun_frames']} frames, "
-        f"{args['rerun_reps']} old/new pairs interleaved. "
-        f"Times are medians in ms; the ratio is new/old.\n"
+        f"Load averages (1/5/15 min) when each sitting started or ended: {loads}. "
+        f"Times are medians in ms; the ratio is new/old. Each table says its "
+        f"frames, pairs, threshold and reruns.\n"
     )
     slower, frames, only, failed = [], [], [], []
     body = []
@@ -329,20 +331,23 @@ def render(state, a):
             rows = [r for r in paired(j["rows"]) if r[2] or r[3]]
             if not rows or j["errors"]["old"]:
                 continue
+            lim = (j.get("min_ratio", args["min_ratio"]), j.get("min_ms", args["min_ms"]))
+            rf, rp = j.get("rerun", [args["rerun_frames"], args["rerun_reps"]])
             body.append(
                 f"\n{j['job']} (`{' '.join(j['args'])}`, {j['frames']} frames, "
-                f"{j['reps']} pairs, load {j['load'][0]}):\n"
+                f"{j['reps']} pairs, load {j['load'][0]}; flagged above {lim[0]:.2f}x, "
+                f"reruns {rf} frames, {rp} pairs):\n"
             )
             body.append("| setting | pass | old ms | new ms | new/old | |")
             body.append("|---|---|---|---|---|---|")
             for s, p, o, n in rows:
                 ratio = statistics.median(n) / statistics.median(o) if o and n and statistics.median(o) > 0 else None
-                flag = verdict(o, n, args["min_ratio"], args["min_ms"])
+                flag = verdict(o, n, *lim)
                 if flag and s in j["reruns"]:
                     rr = {(rs, rp): (ro, rn) for rs, rp, ro, rn in paired(j["reruns"][s]["rows"])}
                     if (s, p) in rr:
                         ro, rn = rr[(s, p)]
-                        again = verdict(ro, rn, args["min_ratio"], args["min_ms"])
+                        again = verdict(ro, rn, *lim)
                         rratio = statistics.median(rn) / statistics.median(ro) if ro and rn else float("nan")
                         flag = (
                             f"**slower**: rerun {fmt_ms(ro)} → {fmt_ms(rn)} ({rratio:.2f})"

@@ -319,7 +319,7 @@ def render(state, a):
     )
     slower, frames, only, failed = [], [], [], []
     body = []
-    for e in state["scenes"]:
+    for e in sorted(state["scenes"], key=lambda e: e["name"]):
         w, h = e["size"]
         body.append(f"\n### {e['name']} ({e['own']}, {w}x{h})\n")
         for j in e["jobs"]:
@@ -386,6 +386,14 @@ def render(state, a):
         out.append("\nScenes the old binary cannot run (so no before):\n")
         for n, j, err in failed:
             out.append(f"- {n} ({j}): `{err}`")
+    done = {e["name"] for e in state["scenes"]}
+    missing = [
+        os.path.splitext(os.path.basename(f))[0]
+        for f in sorted(glob.glob("scenes/*.toml"))
+        if os.path.splitext(os.path.basename(f))[0] not in done
+    ]
+    if missing:
+        out.append("\nScenes not measured in this sitting: " + ", ".join(missing) + ".")
     out.append("\n" + "\n".join(body))
     return "\n".join(out) + "\n"
 

@@ -307,6 +307,11 @@ def main():
     print(f"wrote {a.page}", file=sys.stderr)
 
 
+def plain(err):
+    """An error line as page text: no backticks, no `error: ` prefix."""
+    return err.replace("`", "'").removeprefix("error: ")
+
+
 def render(state, a):
     """The markdown tables: a summary, then one table per scene."""
     out = []
@@ -325,9 +330,9 @@ def render(state, a):
         for j in e["jobs"]:
             if j["errors"]["old"]:
                 failed.append((e["name"], j["job"], j["errors"]["old"][0]))
-                body.append(f"\n{j['job']}: the old binary cannot run it: `{j['errors']['old'][0]}`\n")
+                body.append(f"\n{j['job']}: the old binary cannot run it: \"{plain(j['errors']['old'][0])}\"\n")
             if j["errors"]["new"]:
-                body.append(f"\n{j['job']}: the new binary failed: `{j['errors']['new'][0]}`\n")
+                body.append(f"\n{j['job']}: the new binary failed: \"{plain(j['errors']['new'][0])}\"\n")
             rows = [r for r in paired(j["rows"]) if r[2] or r[3]]
             if not rows or j["errors"]["old"]:
                 continue
@@ -385,7 +390,7 @@ def render(state, a):
     if failed:
         out.append("\nScenes the old binary cannot run (so no before):\n")
         for n, j, err in failed:
-            out.append(f"- {n} ({j}): `{err}`")
+            out.append(f"- {n} ({j}): \"{plain(err)}\"")
     done = {e["name"] for e in state["scenes"]}
     missing = [
         os.path.splitext(os.path.basename(f))[0]

@@ -29,6 +29,19 @@ pub const MAX_AREA_LIGHTS: usize = 8;
 /// (glsl/lighting/area_light_reference.glsl); 256 is 131 072 points a light.
 pub const REFERENCE_POINTS: std::ops::RangeInclusive<u32> = 1..=256;
 
+/// `render.area_light_points`, checked against `REFERENCE_POINTS`.
+pub(super) fn reference_points(n: u32) -> Result<u32> {
+    let range = REFERENCE_POINTS;
+    if !range.contains(&n) {
+        bail!(
+            "render.area_light_points: expected {}..={} (N x N points per triangle of a light), found {n}",
+            range.start(),
+            range.end()
+        );
+    }
+    Ok(n)
+}
+
 super::settings::setting! {
     /// `render.area_light_reference`: how the forward pass shades the area
     /// lights. LTC, or the reference LTC is measured against: gloss's own

@@ -221,18 +221,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
         ibl: r.ibl,
         area_lights: r.area_lights,
         area_light_reference: r.area_light_reference,
-        area_light_points: {
-            let range = super::area_lights::REFERENCE_POINTS;
-            if !range.contains(&r.area_light_points) {
-                bail!(
-                    "render.area_light_points: expected {}..={} (N x N points per triangle of a light), found {}",
-                    range.start(),
-                    range.end(),
-                    r.area_light_points
-                );
-            }
-            r.area_light_points
-        },
+        area_light_points: super::area_lights::reference_points(r.area_light_points)?,
         ambient_occlusion: super::ambient_occlusion::resolve(f.ambient_occlusion.as_ref())?,
         gbuffer_encoding: r.gbuffer_encoding,
         gbuffer: r.gbuffer,

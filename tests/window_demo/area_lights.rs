@@ -44,7 +44,10 @@ fn switch_off_and_on(scene: &str) {
         shot(&dir, &log, 3),
     );
     let n = light_pixels(&on);
-    assert!(n > 500, "{scene}: only {n} pixels of the lights with the lights on");
+    assert!(
+        n > 500,
+        "{scene}: only {n} pixels of the lights with the lights on"
+    );
     assert_eq!(
         light_pixels(&off),
         0,

@@ -16,6 +16,7 @@ mod common;
 mod cascade_colors;
 mod cascaded_shadow_maps;
 mod culling;
+mod depth_only;
 mod face_passes;
 mod hard_cases;
 mod paths;

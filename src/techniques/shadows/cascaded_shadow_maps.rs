@@ -28,15 +28,15 @@
 //! glCullFace(GL_FRONT); restores no depth test, GL_LESS, no depth clamp,
 //! no polygon offset, no culling, GL_BACK, GL_CCW.
 
+use super::casters::{CasterPrograms, draw_casters};
 use super::depth_pass;
-use super::shadow_map::{draw_casters, transparent};
+use super::shadow_map::transparent;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::shadows::casters;
 use crate::frame::targets::{TargetDesc, format_name};
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::depth_map;
-use crate::gl::program::Program;
 use crate::scene::Scene;
 use anyhow::Result;
 use glow::HasContext;
@@ -92,14 +92,15 @@ fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
 }
 
 struct CascadedShadowMaps {
-    flat: Program,
+    flat: CasterPrograms,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let flat = p.build(&[
+    let stages = [
         (glow::VERTEX_SHADER, "shadows/shadow_map.vert"),
         (glow::FRAGMENT_SHADER, "shadows/shadow_map.frag"),
-    ])?;
+    ];
+    let flat = CasterPrograms::build(p, &stages, &[])?;
     Ok(Box::new(CascadedShadowMaps { flat }))
 }
 
@@ -125,10 +126,11 @@ impl RunPasses for CascadedShadowMaps {
             // shadow_map.rs's depth-pass state: what lies nearer the light
             // than the box still casts (clamped).
             depth_pass::set(gl, &s);
-            let program = &self.flat;
-            program.use_program();
-            program.set_mat4("u_light_view_projection", vp);
-            draw_casters(gl, program, f, std::slice::from_ref(vp), s.cull_front);
+            // The opaque casters' program, then the alpha-tested ones'
+            // (casters.rs).
+            let setup = |p: &crate::gl::program::Program| p.set_mat4("u_light_view_projection", vp);
+            let faces = std::slice::from_ref(vp);
+            draw_casters(gl, &self.flat, f, faces, s.cull_front, &setup);
 
             // Restore the state this pass changed.
             gl.use_program(None);

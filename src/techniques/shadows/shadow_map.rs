@@ -28,6 +28,7 @@
 //! depth clamp, no polygon offset, no culling, GL_BACK, GL_CCW, and no
 //! texture or sampler on unit DIFFUSE_TEXTURE (unit 0 active).
 
+use super::casters::{CasterPrograms, draw_casters};
 use super::depth_pass;
 use crate::frame::lights::FrameLights;
 use crate::frame::pass::{ALL_FACES, CUBE_FACES};
@@ -35,11 +36,10 @@ use crate::frame::plan::Pass;
 use crate::frame::shadows::{Caster, casters};
 use crate::frame::targets::TargetDesc;
 use crate::frame::targets::format_name;
-use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::depth_map;
 use crate::gl::program::Program;
-use crate::scene::{AlphaTest, CubeRender, Cull, LightKind, Scene};
+use crate::scene::{CubeRender, LightKind, Scene};
 use anyhow::Result;
 use glow::HasContext;
 
@@ -130,29 +130,30 @@ fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
     vec![]
 }
 
+/// Each with its depth-only program for opaque casters (casters.rs).
 struct ShadowMap {
-    flat: Program,
-    cube: Program,
-    cube_layered: Program,
+    flat: CasterPrograms,
+    cube: CasterPrograms,
+    cube_layered: CasterPrograms,
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let flat = p.build(&[
+    let flat = [
         (glow::VERTEX_SHADER, "shadows/shadow_map.vert"),
         (glow::FRAGMENT_SHADER, "shadows/shadow_map.frag"),
-    ])?;
-    let cube = p.build(&[
+    ];
+    let flat = CasterPrograms::build(p, &flat, &[])?;
+    let cube = [
         (glow::VERTEX_SHADER, "shadows/shadow_cube.vert"),
         (glow::FRAGMENT_SHADER, "shadows/shadow_cube.frag"),
-    ])?;
-    let cube_layered = p.build_with(
-        &[
-            (glow::VERTEX_SHADER, "shadows/shadow_cube.vert"),
-            (glow::GEOMETRY_SHADER, "shadows/shadow_cube.geom"),
-            (glow::FRAGMENT_SHADER, "shadows/shadow_cube.frag"),
-        ],
-        &[("LAYERED", "1".into())],
-    )?;
+    ];
+    let cube = CasterPrograms::build(p, &cube, &[])?;
+    let layered = [
+        (glow::VERTEX_SHADER, "shadows/shadow_cube.vert"),
+        (glow::GEOMETRY_SHADER, "shadows/shadow_cube.geom"),
+        (glow::FRAGMENT_SHADER, "shadows/shadow_cube.frag"),
+    ];
+    let cube_layered = CasterPrograms::build(p, &layered, &[("LAYERED", "1".into())])?;
     Ok(Box::new(ShadowMap {
         flat,
         cube,
@@ -182,116 +183,47 @@ impl RunPasses for ShadowMap {
             // 01 §8.5.1), front-face culling: depth_pass.rs.
             depth_pass::set(gl, &s);
 
-            let program = match (caster.cube, s.cube) {
+            let programs = match (caster.cube, s.cube) {
                 (false, _) => &self.flat,
                 (true, CubeRender::SixPasses) => &self.cube,
                 (true, CubeRender::GeometryShader) => &self.cube_layered,
             };
-            program.use_program();
-            program.set_vec3("u_light_position", light.position);
-            program.set_f32("u_far", view.far);
-            program.set_f32("u_slope_bias", s.slope_bias);
-            match pass.face {
-                // A 2D map (one face), or one face of the cube: one
-                // framebuffer, the face's view-projection.
+            // A 2D map (one face), or one face of the cube: one framebuffer,
+            // the face's view-projection. Or the whole cube attached as a
+            // layered image: one clear clears all six faces, one draw
+            // reaches them all.
+            let (framebuffer, faces) = match pass.face {
                 None | Some(0..6) => {
                     let face = pass.face.unwrap_or(0);
-                    let vp = &view.view_projections[face];
-                    gl.bind_framebuffer(glow::FRAMEBUFFER, Some(map.framebuffers[face]));
-                    gl.clear(glow::DEPTH_BUFFER_BIT);
-                    program.set_mat4("u_light_view_projection", vp);
-                    draw_casters(gl, program, f, std::slice::from_ref(vp), s.cull_front);
+                    (face, std::slice::from_ref(&view.view_projections[face]))
                 }
-                // The whole cube attached as a layered image: one clear
-                // clears all six faces, one draw reaches them all.
-                Some(_) => {
-                    gl.bind_framebuffer(glow::FRAMEBUFFER, Some(map.framebuffers[6]));
-                    gl.clear(glow::DEPTH_BUFFER_BIT);
+                Some(_) => (6, &view.view_projections[..]),
+            };
+            let layered = framebuffer == 6;
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(map.framebuffers[framebuffer]));
+            gl.clear(glow::DEPTH_BUFFER_BIT);
+            // The pass's uniforms, on each program the casters use: the
+            // opaque casters' depth-only one, then the alpha-tested ones'
+            // (casters.rs).
+            let setup = |program: &Program| {
+                program.set_vec3("u_light_position", light.position);
+                program.set_f32("u_far", view.far);
+                program.set_f32("u_slope_bias", s.slope_bias);
+                if layered {
                     program.set_mat4("u_light_view_projection", &glam::Mat4::IDENTITY);
-                    for (face, vp) in view.view_projections.iter().enumerate() {
+                    for (face, vp) in faces.iter().enumerate() {
                         program.set_mat4(&format!("u_face_view_projection[{face}]"), vp);
                     }
-                    draw_casters(gl, program, f, &view.view_projections, s.cull_front);
+                } else {
+                    program.set_mat4("u_light_view_projection", &faces[0]);
                 }
-            }
+            };
+            draw_casters(gl, programs, f, faces, s.cull_front, &setup);
 
             // Restore the state this pass changed.
             gl.use_program(None);
             depth_pass::restore(gl);
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-        }
-    }
-}
-
-/// Every opaque object (mirrors too: they are solid); transparent ones cast
-/// no shadow here. With `render.frustum_culling`, only the casters inside
-/// the frustum of one of `faces` (the light's view-projections this draw
-/// reaches; notes 01 §6.3), counted in `DrawList::shadow_cull`.
-/// With `cull_front`, a two-sided material (`cull = "none"`: a leaf's
-/// quad) is drawn without culling, so that it casts from either side.
-pub(super) fn draw_casters(
-    gl: &glow::Context,
-    p: &Program,
-    f: &Frame,
-    faces: &[glam::Mat4],
-    cull_front: bool,
-) {
-    let mut keep = vec![true; f.draws.items.len()];
-    if f.scene.render.frustum_culling {
-        let mut any = vec![false; keep.len()];
-        let mut total = f.draws.shadow_cull.get();
-        for vp in faces {
-            let (seen, stats) = f.draws.casters_in(vp);
-            for (a, s) in any.iter_mut().zip(seen) {
-                *a |= s;
-            }
-            total.objects += stats.objects;
-            total.drawn += stats.drawn;
-            total.culled += stats.culled;
-            total.tests += stats.tests;
-        }
-        f.draws.shadow_cull.set(total);
-        keep = any;
-    }
-    let casters = (f.draws.items.iter().zip(keep)).filter(|(d, k)| *k && !d.transparent);
-    let mut bound = false;
-    for (d, _) in casters {
-        unsafe { gl.front_face(if d.mirrored { glow::CW } else { glow::CCW }) };
-        if cull_front {
-            match d.cull {
-                Cull::None => unsafe { gl.disable(glow::CULL_FACE) },
-                _ => unsafe { gl.enable(glow::CULL_FACE) },
-            }
-        }
-        p.set_mat4("u_model", &d.model);
-        // 2. An alpha-tested caster runs its material's alpha test on its
-        // diffuse texture (glsl/shadows/shadow_alpha.glsl): a leaf casts a
-        // leaf, not its quad.
-        let tested = d.alpha_test != AlphaTest::Always.code();
-        p.set_i32("u_alpha_test", d.alpha_test);
-        if tested {
-            let texture = d.texture.map(|t| f.draws.textures[t].id);
-            p.set_f32("u_alpha_ref", d.alpha_ref);
-            p.set_bool("u_has_diffuse_texture", texture.is_some());
-            let (scale, offset) = (d.texturing.uv_scale, d.texturing.uv_offset);
-            p.set_vec4(
-                "u_uv_transform",
-                glam::Vec4::new(scale[0], scale[1], offset[0], offset[1]),
-            );
-            unsafe {
-                gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
-                gl.bind_texture(glow::TEXTURE_2D, texture);
-                gl.bind_sampler(unit::DIFFUSE_TEXTURE, f.draws.sampler(d, &f.scene.render));
-            }
-            bound = true;
-        }
-        f.draws.mesh(d).draw();
-    }
-    if bound {
-        unsafe {
-            gl.bind_texture(glow::TEXTURE_2D, None);
-            gl.bind_sampler(unit::DIFFUSE_TEXTURE, None);
-            gl.active_texture(glow::TEXTURE0);
         }
     }
 }

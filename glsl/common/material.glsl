@@ -11,14 +11,27 @@ uniform float u_microfacet_eta;
 uniform float u_microfacet_k_s;
 uniform bool u_has_diffuse_texture;
 uniform sampler2D u_diffuse_texture;   // sRGB texture: sampling returns linear
+// A geometry pass built for a scene with no specular map, or no glTF maps
+// and no emission (src/techniques/deferred/gbuffer.rs `MaterialVariant`),
+// defines NO_SPECULAR_MAP or NO_PBR: the flag is then a constant false and
+// the compiler drops the code behind it (llvmpipe runs a uniform branch's
+// code even where the uniform is false).
+#ifdef NO_SPECULAR_MAP
+const bool u_has_specular_map = false;
+#else
 uniform bool u_has_specular_map;
+#endif
 uniform sampler2D u_specular_map;      // unit::SPECULAR_MAP, linear data
 
 // glTF 2.0's maps (src/scene/gltf_material.rs, docs/gltf.md): with a
 // metallic-roughness map, c_d and the microfacet triple are taken per
 // texel from baseColor, metallic = metallicFactor B and roughness =
 // roughnessFactor G; occlusion scales the ambient term; emission is added.
+#ifdef NO_PBR
+const bool u_pbr = false;
+#else
 uniform bool u_pbr;                    // false: none of the below (one uniform per draw)
+#endif
 uniform bool u_has_metal_rough_map;
 uniform sampler2D u_metal_rough_map;   // unit::METAL_ROUGH_MAP, linear
 uniform vec3 u_base_color;             // baseColorFactor.rgb

@@ -37,17 +37,27 @@ void main() {
     vec3 kd = albedo.rgb;
     vec3 ambient = u_ambient * kd;
     // Image-based lighting (render.ibl): the ambient term from the environment.
+    // NO_IBL, NO_AMBIENT_OCCLUSION, NO_EMISSION: a variant for a frame
+    // without it (src/techniques/deferred/composite.rs), the code left out.
+#ifndef NO_IBL
     if (u_has_ibl) {
         Surface s = read_geometry_texel(ivec2(gl_FragCoord.xy));
         ambient = ibl_ambient(u_ambient, normalize(s.N), normalize(u_eye - s.P), kd, s.ks, s.r);
     }
+#endif
     ambient *= albedo.a;   // a: the material's occlusion map
+#ifndef NO_AMBIENT_OCCLUSION
     if (u_has_ambient_occlusion) {
         ambient *= texture(u_ambient_occlusion, uv).r;
     }
+#endif
 #ifdef CASCADE_TINTS
     g_cascade_tint = cascade_tint_at(read_geometry_texel(ivec2(gl_FragCoord.xy)).P);
 #endif
+#ifdef NO_EMISSION
+    vec3 emitted = vec3(0.0);
+#else
     vec3 emitted = read_emission(uv);
+#endif
     frag_color = output_color(ambient + emitted + (u_has_light ? texture(u_light, uv).rgb : vec3(0.0)));
 }

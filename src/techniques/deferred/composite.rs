@@ -116,42 +116,78 @@ struct Composite {
     /// tinting each pixel by its cascade (shadow.cascade_colors) or not;
     /// writing linear light for GL to encode (HARDWARE_SRGB) or encoding
     /// in the shader.
-    programs: [OnceCell<Program>; 8],
+    /// And with or without the image-based lighting, ambient occlusion and
+    /// emission code (NO_IBL, NO_AMBIENT_OCCLUSION, NO_EMISSION where the
+    /// frame has none: 8 x 8 programs).
+    programs: [OnceCell<Program>; 64],
 }
 
-/// Which of the composite's programs: depth written, cascade tints, sRGB by GL.
-fn variant(depth: bool, tints: bool, hardware: bool) -> usize {
-    usize::from(depth) * 4 + usize::from(tints) * 2 + usize::from(hardware)
+/// What a frame's composite needs.
+#[derive(Clone, Copy)]
+struct Needs {
+    depth: bool,
+    tints: bool,
+    hardware: bool,
+    ibl: bool,
+    ambient_occlusion: bool,
+    emission: bool,
 }
 
-/// The variant `f`'s output needs: (depth written, cascade tints, sRGB by GL).
-fn needs(f: &Frame) -> (bool, bool, bool) {
+/// Which of the composite's programs.
+fn variant(n: Needs) -> usize {
+    [
+        n.depth,
+        n.tints,
+        n.hardware,
+        n.ibl,
+        n.ambient_occlusion,
+        n.emission,
+    ]
+    .iter()
+    .fold(0, |i, &on| i * 2 + usize::from(on))
+}
+
+/// The variant `f` needs: depth written, cascade tints, sRGB by GL (its
+/// output), and the ambient term's parts (all of them with render.specialize off).
+fn needs(f: &Frame) -> Needs {
     let output = f.targets.get(world_target(f.scene));
     let depth = output.depth_stencil.is_some() || output.shared_depth.is_some();
     let tints = shadows::cascade_tints(f.scene);
     // GL encodes where the output is sRGB and wants encoded values.
     let srgb = output.colors[0].internal_format == glow::SRGB8_ALPHA8;
-    (depth, tints, f.uniforms.output_srgb && srgb)
+    let general = !f.scene.render.specialize;
+    Needs {
+        depth,
+        tints,
+        hardware: f.uniforms.output_srgb && srgb,
+        ibl: general || f.draws.environment.ibl.is_some(),
+        ambient_occlusion: general || super::ambient_light::result_target(f.scene).is_some(),
+        emission: gbuffer::MaterialVariant::of(f.scene).emission,
+    }
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     Ok(Box::new(Composite {
         build: p.later(),
-        programs: Default::default(),
+        programs: std::array::from_fn(|_| OnceCell::new()),
     }))
 }
 
 impl Composite {
-    /// Variant `i`'s program, built now if no frame has needed it yet.
-    fn program(&self, i: usize) -> Result<&Program> {
+    /// The program for `n`, built now if no frame has needed it yet.
+    fn program(&self, n: Needs) -> Result<&Program> {
+        let i = variant(n);
         if let Some(p) = self.programs[i].get() {
             return Ok(p);
         }
-        let (depth, tints, hardware) = (i & 4 != 0, i & 2 != 0, i & 1 != 0);
+        let tints = n.tints;
         let defines: Vec<(&str, String)> = [
-            (depth, "WRITE_DEPTH"),
-            (tints, "CASCADE_TINTS"),
-            (hardware, "HARDWARE_SRGB"),
+            (n.depth, "WRITE_DEPTH"),
+            (n.tints, "CASCADE_TINTS"),
+            (n.hardware, "HARDWARE_SRGB"),
+            (!n.ibl, "NO_IBL"),
+            (!n.ambient_occlusion, "NO_AMBIENT_OCCLUSION"),
+            (!n.emission, "NO_EMISSION"),
         ]
         .into_iter()
         .filter(|(on, _)| *on)
@@ -167,16 +203,16 @@ impl Composite {
 
 impl RunPasses for Composite {
     fn prepare(&self, _: &Pass, f: &Frame) -> Result<()> {
-        let (depth, tints, hardware) = needs(f);
-        self.program(variant(depth, tints, hardware)).map(|_| ())
+        self.program(needs(f)).map(|_| ())
     }
 
     fn run(&self, _: &Pass, f: &Frame) {
         let output = f.targets.get(world_target(f.scene));
-        let (depth, tints, hardware) = needs(f);
+        let n = needs(f);
+        let (depth, tints, hardware) = (n.depth, n.tints, n.hardware);
         let (gl, u) = (f.gl, f.uniforms);
         // Built by `prepare`, which the renderer calls first.
-        let p = match self.program(variant(depth, tints, hardware)) {
+        let p = match self.program(n) {
             Ok(p) => p,
             Err(e) => return eprintln!("warning: the composite did not run: {e:#}"),
         };

@@ -17,10 +17,12 @@
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::gbuffer;
+use crate::frame::gbuffer::MaterialVariant;
 use crate::frame::gbuffer_slim;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
 use crate::frame::targets::{Depth, TargetDesc};
+use crate::frame::technique::LaterPrograms;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
@@ -30,6 +32,7 @@ use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 use glow::HasContext;
+use std::cell::OnceCell;
 
 pub const GBUFFER: Technique = Technique {
     name: "gbuffer",
@@ -111,40 +114,73 @@ fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
         .collect()
 }
 
+/// The pass's shaders.
+const STAGES: [(u32, &str); 2] = [
+    (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
+    (glow::FRAGMENT_SHADER, "deferred/gbuffer.frag"),
+];
+
 struct GBufferPass {
-    program: Program,
-    /// The light pre-pass's: the material triple at locations 1 and 2.
-    thin: Program,
-    /// The two, writing the packed normal (OCTAHEDRAL_NORMALS).
-    octahedral: [Program; 2],
+    build: LaterPrograms,
+    /// The programs, by [`program_index`], each built the first frame that
+    /// needs it: full or thin (the light pre-pass's: the material triple at
+    /// locations 1 and 2), the normal as xyz or packed (OCTAHEDRAL_NORMALS),
+    /// and the material code the scene's materials need
+    /// (`gbuffer::MaterialVariant`: 8 of them).
+    programs: [OnceCell<Program>; 32],
+}
+
+/// Which program: thin, packed normal, the material variant.
+fn program_index(thin: bool, packed: bool, material: MaterialVariant) -> usize {
+    usize::from(thin) * 16 + usize::from(packed) * 8 + material.index()
+}
+
+/// What `f` needs: (thin, packed normal, material variant).
+fn needs(f: &Frame) -> (bool, bool, MaterialVariant) {
+    let target = f.targets.get(gbuffer::NAME);
+    let thin = layout(f.scene) == Some(true);
+    let packed = target.colors[0].internal_format == gbuffer::OCTAHEDRAL.1;
+    (thin, packed, MaterialVariant::of(f.scene))
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let stages = [
-        (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
-        (glow::FRAGMENT_SHADER, "deferred/gbuffer.frag"),
-    ];
-    let oct = ("OCTAHEDRAL_NORMALS", "1".to_string());
     Ok(Box::new(GBufferPass {
-        program: p.build(&stages)?,
-        thin: p.build_with(&stages, &[("THIN_GBUFFER", "1".into())])?,
-        octahedral: [
-            p.build_with(&stages, std::slice::from_ref(&oct))?,
-            p.build_with(&stages, &[("THIN_GBUFFER", "1".into()), oct])?,
-        ],
+        build: p.later(),
+        programs: std::array::from_fn(|_| OnceCell::new()),
     }))
 }
 
+impl GBufferPass {
+    /// The program for `needs`, built now if no frame has needed it yet.
+    fn program(&self, (thin, packed, material): (bool, bool, MaterialVariant)) -> Result<&Program> {
+        let i = program_index(thin, packed, material);
+        if let Some(p) = self.programs[i].get() {
+            return Ok(p);
+        }
+        let mut defines = material.defines();
+        if thin {
+            defines.push(("THIN_GBUFFER", "1".into()));
+        }
+        if packed {
+            defines.push(("OCTAHEDRAL_NORMALS", "1".into()));
+        }
+        let program = self.build.build_with(&STAGES, &defines)?;
+        Ok(self.programs[i].get_or_init(|| program))
+    }
+}
+
 impl RunPasses for GBufferPass {
+    fn prepare(&self, _: &Pass, f: &Frame) -> Result<()> {
+        self.program(needs(f)).map(|_| ())
+    }
+
     fn run(&self, _: &Pass, f: &Frame) {
         let target = f.targets.get(gbuffer::NAME);
-        let thin = layout(f.scene) == Some(true);
-        let packed = target.colors[0].internal_format == gbuffer::OCTAHEDRAL.1;
-        let p = match (thin, packed) {
-            (false, false) => &self.program,
-            (true, false) => &self.thin,
-            (false, true) => &self.octahedral[0],
-            (true, true) => &self.octahedral[1],
+        let (_, packed, _) = needs(f);
+        // Built by `prepare`, which the renderer calls first.
+        let p = match self.program(needs(f)) {
+            Ok(p) => p,
+            Err(e) => return eprintln!("warning: the G-buffer pass did not run: {e:#}"),
         };
         let table = gbuffer::shininess_table(f.scene);
         let (gl, u) = (f.gl, f.uniforms);

@@ -31,6 +31,11 @@ uniform sampler2D u_specular_map;      // unit::SPECULAR_MAP, linear data
 const bool u_pbr = false;
 #else
 uniform bool u_pbr;                    // false: none of the below (one uniform per draw)
+#if defined(VARIANT_FORWARD_GLTF) && !VARIANT_FORWARD_GLTF
+// A lighting variant whose frame has no glTF map or emission
+// (src/frame/variant.rs forward_gltf): the code below folds away.
+#define u_pbr false
+#endif
 #endif
 uniform bool u_has_metal_rough_map;
 uniform sampler2D u_metal_rough_map;   // unit::METAL_ROUGH_MAP, linear

@@ -130,6 +130,21 @@ impl DrawList {
         p.set_vec3("u_emissive", d.pbr.emissive);
     }
 
+    /// Point a geometry program's glTF map samplers (`u_metal_rough_map`,
+    /// `u_occlusion_map`, `u_emissive_map`) at their own units, once when
+    /// it is built. `bind_pbr_maps` sets them only for a material with the
+    /// map; left at GL's default, unit 0, they read the diffuse texture,
+    /// and llvmpipe runs those reads (with the material's filter: 16x
+    /// anisotropic on texture-filtering) under a mask even where `u_pbr`
+    /// is false. On an empty unit a read costs next to nothing.
+    pub fn setup_program(p: &Program) {
+        p.use_program();
+        p.set_i32("u_metal_rough_map", unit::METAL_ROUGH_MAP as i32);
+        p.set_i32("u_occlusion_map", unit::OCCLUSION_MAP as i32);
+        p.set_i32("u_emissive_map", unit::EMISSIVE_MAP as i32);
+        p.unuse();
+    }
+
     /// Unbind what `bind_textures` bound; unit 0 is left active.
     pub fn unbind_textures(gl: &glow::Context) {
         unsafe {

@@ -73,6 +73,11 @@ pub struct LightingVariant {
     /// The G-buffer has its specular attachment; false: the slim one, whose
     /// specular colour is a uniform (src/frame/gbuffer_slim.rs).
     pub gbuffer_specular: bool,
+    /// Some object's material has a glTF metallic-roughness, occlusion or
+    /// emissive map, or emits: the geometry shaders' glTF code
+    /// (glsl/common/material.glsl behind `u_pbr`). Without it llvmpipe
+    /// still ran that code's texture reads under a mask.
+    pub forward_gltf: bool,
 }
 
 impl LightingVariant {
@@ -96,6 +101,7 @@ impl LightingVariant {
         light_halves: light_halves::code::NONE,
         gbuffer_octahedral: false,
         gbuffer_specular: true,
+        forward_gltf: true,
     };
 
     /// The parts `scene` needs, or `GENERAL` with `render.specialize` off.
@@ -140,6 +146,7 @@ impl LightingVariant {
             },
             gbuffer_octahedral: gbuffer::octahedral(scene),
             gbuffer_specular: gbuffer_slim::constant_specular(scene).is_none(),
+            forward_gltf: (scene.objects.iter()).any(|o| gltf_code(&scene.materials[o.material])),
         }
     }
 
@@ -173,6 +180,7 @@ impl LightingVariant {
             ("VARIANT_LIGHT_HALVES", self.light_halves.to_string()),
             ("VARIANT_GBUFFER_OCTAHEDRAL", b(self.gbuffer_octahedral)),
             ("VARIANT_GBUFFER_SPECULAR", b(self.gbuffer_specular)),
+            ("VARIANT_FORWARD_GLTF", b(self.forward_gltf)),
         ]
     }
 
@@ -255,6 +263,19 @@ impl LightingVariant {
         if !self.gbuffer_specular {
             extra.push_str(", specular colour from a uniform (no G-buffer attachment)");
         }
+        if self.forward_gltf {
+            extra.push_str(", glTF maps");
+        }
         format!("{types}, {falloff}, {shadows}, {model}{extra}")
     }
+}
+
+/// Material `m` needs material.glsl's glTF code: a map of glTF's or an
+/// emission (src/frame/draw_textures.rs sets `u_pbr` for the same).
+fn gltf_code(m: &crate::scene::material::Material) -> bool {
+    let p = &m.pbr;
+    p.metallic_roughness.is_some()
+        || p.occlusion.is_some()
+        || p.emissive_map.is_some()
+        || p.emissive != glam::Vec3::ZERO
 }

@@ -17,6 +17,7 @@
 mod common;
 
 mod docs_listings;
+mod material_units;
 mod order;
 mod registry;
 mod try_it;

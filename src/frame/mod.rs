@@ -42,6 +42,7 @@ pub mod light_halves;
 pub mod light_maps;
 pub mod lights;
 pub mod ltc_area_lights;
+pub mod material_variant;
 pub mod meshes;
 pub mod multisample;
 pub mod particles;

@@ -50,7 +50,7 @@ fn render_scale_a_quarter_shows_each_rendered_pixel_as_a_block() {
     let script = r#"
         start --window 1280x720 default
         # A pause after each key: on a loaded machine a frame can take a second.
-        key F2; sleep 1; key F2; sleep 2; key F12; shot 1
+        key F2; sleep 2; key F2; sleep 4; key F12; shot 1
         quit
     "#;
     let Some((dir, log)) = drive("gloss-window-scale", "1280x720x24", script) else {

@@ -282,3 +282,61 @@ pub fn capture_feedback(
             .collect()
     }
 }
+
+/// A program for `capture_feedback`: the test's vertex shader `vert`, which
+/// includes the shipped glsl/common/`include` (`#include "common/<include>"`),
+/// and a fragment shader that writes white (never run: the capture turns the
+/// rasterizer off), linked to capture `varyings`. The shaders and a copy of
+/// the include go to a temporary folder, removed once the program is linked.
+pub fn feedback_program(
+    gl: &std::sync::Arc<glow::Context>,
+    include: &str,
+    vert: &str,
+    varyings: &[&str],
+) -> gloss::gl::program::Program {
+    use gloss::gl::program::{Program, Sources};
+    let dir = std::env::temp_dir().join(format!(
+        "gloss-feedback-{}-{}",
+        include.replace('.', "-"),
+        std::process::id()
+    ));
+    std::fs::create_dir_all(dir.join("common")).unwrap();
+    std::fs::create_dir_all(dir.join("test")).unwrap();
+    let shipped = root().join("glsl/common").join(include);
+    std::fs::copy(shipped, dir.join("common").join(include)).unwrap();
+    std::fs::write(dir.join("test/feedback.vert"), vert).unwrap();
+    let frag = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+    std::fs::write(dir.join("test/feedback.frag"), frag).unwrap();
+    let stages = [
+        (glow::VERTEX_SHADER, "test/feedback.vert"),
+        (glow::FRAGMENT_SHADER, "test/feedback.frag"),
+    ];
+    let p = Program::with_feedback(gl, &Sources::Directory(dir.clone()), &stages, &[], varyings);
+    let _ = std::fs::remove_dir_all(&dir);
+    p.unwrap_or_else(|e| panic!("the test shaders with glsl/common/{include}: {e:#}"))
+}
+
+/// Run the gloss binary with `args` in the crate's root, the GL capped as
+/// the tests run it; its standard output. Panics with its standard error
+/// unless it succeeds.
+pub fn gloss(args: &[&str]) -> String {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
+        .args(args)
+        .env("MESA_GL_VERSION_OVERRIDE", "3.3")
+        .env("MESA_GLSL_VERSION_OVERRIDE", "330")
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "gloss {args:?}: {err}");
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// How many pixels of `now` differ from `before` in any byte; panics,
+/// naming `what`, if the sizes differ.
+pub fn pixels_differing(now: &RgbaImage, before: &RgbaImage, what: &str) -> usize {
+    assert_eq!(now.dimensions(), before.dimensions(), "{what}: sizes");
+    (now.pixels().zip(before.pixels()))
+        .filter(|(a, b)| a != b)
+        .count()
+}

@@ -16,7 +16,6 @@
 use crate::common;
 use gloss::frame::lights::FrameLights;
 use gloss::frame::variant::LightingVariant;
-use gloss::gl::program::{Program, Sources};
 use gloss::image_compare::{compare_rgba8, flip::flip};
 use gloss::renderer::Output;
 use gloss::scene::{LightData, RenderPath, Scene};
@@ -32,93 +31,35 @@ void main() {
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
 }
 ";
-const FRAG: &str = "#version 330 core
-out vec4 c;
-void main() { c = vec4(1.0); }
-";
 
 /// Run glsl/common/half.glsl's `unpack_half2` on `words`, by transform feedback.
 fn on_the_gpu(ctx: &gloss::gl::Headless, words: &[u32]) -> Vec<[f32; 2]> {
-    let dir = std::env::temp_dir().join(format!("gloss-half-{}", std::process::id()));
-    std::fs::create_dir_all(dir.join("common")).unwrap();
-    std::fs::create_dir_all(dir.join("test")).unwrap();
-    let include = common::root().join("glsl/common/half.glsl");
-    std::fs::copy(include, dir.join("common/half.glsl")).unwrap();
-    std::fs::write(dir.join("test/half.vert"), VERT).unwrap();
-    std::fs::write(dir.join("test/half.frag"), FRAG).unwrap();
-    let stages = [
-        (glow::VERTEX_SHADER, "test/half.vert"),
-        (glow::FRAGMENT_SHADER, "test/half.frag"),
-    ];
     let gl = &ctx.gl;
-    let p = Program::with_feedback(
-        gl,
-        &Sources::Directory(dir.clone()),
-        &stages,
-        &[],
-        &["t_value"],
-    )
-    .unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
-    let bytes = words.len() * 8;
-    unsafe {
-        // A draw needs a complete framebuffer, even with the rasterizer off.
-        let fbo = gl.create_framebuffer().unwrap();
-        let rb = gl.create_renderbuffer().unwrap();
-        gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
-        gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, 1, 1);
-        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-        gl.framebuffer_renderbuffer(
-            glow::FRAMEBUFFER,
-            glow::COLOR_ATTACHMENT0,
-            glow::RENDERBUFFER,
-            Some(rb),
-        );
+    let p = common::feedback_program(gl, "half.glsl", VERT, &["t_value"]);
+    let f = unsafe {
         let vao = gl.create_vertex_array().unwrap();
         gl.bind_vertex_array(Some(vao));
         let vbo = gl.create_buffer().unwrap();
         gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
-        let raw: Vec<u8> = words.iter().flat_map(|w| w.to_ne_bytes()).collect();
+        let raw: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
         gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &raw, glow::STATIC_DRAW);
         gl.enable_vertex_attrib_array(0);
         gl.vertex_attrib_pointer_i32(0, 1, glow::UNSIGNED_INT, 4, 0);
-        let out_buffer = gl.create_buffer().unwrap();
-        gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, Some(out_buffer));
-        gl.buffer_data_size(
-            glow::TRANSFORM_FEEDBACK_BUFFER,
-            bytes as i32,
-            glow::STATIC_READ,
+        let f = common::capture_feedback(
+            gl,
+            &p,
+            glow::POINTS,
+            words.len() * 8,
+            |_| {},
+            |gl| gl.draw_arrays(glow::POINTS, 0, words.len() as i32),
         );
-        gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, Some(out_buffer));
-        p.use_program();
-        gl.enable(glow::RASTERIZER_DISCARD);
-        gl.begin_transform_feedback(glow::POINTS);
-        gl.draw_arrays(glow::POINTS, 0, words.len() as i32);
-        gl.end_transform_feedback();
-        gl.disable(glow::RASTERIZER_DISCARD);
-        assert_eq!(
-            gl.get_error(),
-            glow::NO_ERROR,
-            "the capture raised a GL error"
-        );
-        let mut out = vec![0u8; bytes];
-        gl.get_buffer_sub_data(glow::TRANSFORM_FEEDBACK_BUFFER, 0, &mut out);
-        gl.bind_buffer_base(glow::TRANSFORM_FEEDBACK_BUFFER, 0, None);
-        gl.bind_buffer(glow::TRANSFORM_FEEDBACK_BUFFER, None);
         gl.bind_buffer(glow::ARRAY_BUFFER, None);
         gl.bind_vertex_array(None);
-        gl.delete_buffer(out_buffer);
         gl.delete_buffer(vbo);
         gl.delete_vertex_array(vao);
-        gl.use_program(None);
-        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-        gl.delete_framebuffer(fbo);
-        gl.delete_renderbuffer(rb);
-        let f: Vec<f32> = (out.chunks_exact(4))
-            .map(|c| f32::from_ne_bytes(c.try_into().unwrap()))
-            .collect();
-        (0..words.len()).map(|i| [f[2 * i], f[2 * i + 1]]).collect()
-    }
+        f
+    };
+    (0..words.len()).map(|i| [f[2 * i], f[2 * i + 1]]).collect()
 }
 
 /// Half bit patterns that exercise each branch of the decode.

@@ -18,7 +18,6 @@ use crate::common;
 use glam::Vec3;
 use gloss::frame::lights::FrameLights;
 use gloss::frame::plan::FramePlan;
-use gloss::gl::program::{Program, Sources};
 use gloss::image_compare::compare_rgba8;
 use gloss::math::octahedral::{self, angle, hard_cases};
 use gloss::renderer::Output;
@@ -40,37 +39,13 @@ void main() {
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
 }
 ";
-const FRAG: &str = "#version 330 core
-out vec4 c;
-void main() { c = vec4(1.0); }
-";
 
 /// Run glsl/common/octahedral.glsl on `normals`: (packed, round trip,
 /// unpacked from the CPU's bytes) for each, by transform feedback.
 fn on_the_gpu(ctx: &gloss::gl::Headless, normals: &[Vec3]) -> Vec<[Vec3; 3]> {
-    // The shipped include beside this test's two shaders.
-    let dir = std::env::temp_dir().join(format!("gloss-octahedral-{}", std::process::id()));
-    std::fs::create_dir_all(dir.join("common")).unwrap();
-    std::fs::create_dir_all(dir.join("test")).unwrap();
-    let include = common::root().join("glsl/common/octahedral.glsl");
-    std::fs::copy(include, dir.join("common/octahedral.glsl")).unwrap();
-    std::fs::write(dir.join("test/oct.vert"), VERT).unwrap();
-    std::fs::write(dir.join("test/oct.frag"), FRAG).unwrap();
-    let stages = [
-        (glow::VERTEX_SHADER, "test/oct.vert"),
-        (glow::FRAGMENT_SHADER, "test/oct.frag"),
-    ];
-    let varyings = ["t_packed", "t_round_trip", "t_from_cpu"];
     let gl = &ctx.gl;
-    let p = Program::with_feedback(
-        gl,
-        &Sources::Directory(dir.clone()),
-        &stages,
-        &[],
-        &varyings,
-    )
-    .unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
+    let varyings = ["t_packed", "t_round_trip", "t_from_cpu"];
+    let p = common::feedback_program(gl, "octahedral.glsl", VERT, &varyings);
     let input: Vec<f32> = (normals.iter())
         .flat_map(|&n| {
             let b = octahedral::pack(n).map(|x| f32::from(x) / 255.0);

@@ -16,27 +16,13 @@
 
 use crate::common;
 use gloss::renderer::Output;
-use std::process::Command;
-
-fn gloss(args: &[&str]) -> String {
-    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
-        .args(args)
-        .env("MESA_GL_VERSION_OVERRIDE", "3.3")
-        .env("MESA_GLSL_VERSION_OVERRIDE", "330")
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success(), "gloss {args:?}: {err}");
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
 
 fn trace(scene: &str, technique: &str, general: bool) -> String {
     let mut args = vec!["trace", scene, "--technique", technique, "--size", "96x54"];
     if general {
         args.extend(["--set", "render.specialize=false"]);
     }
-    gloss(&args)
+    common::gloss(&args)
 }
 
 /// The programs the first pass of a listing puts in use, in order.
@@ -111,10 +97,7 @@ fn the_images_are_those_of_the_single_program_byte_for_byte() {
         );
         let before = image::open(dir.join(&file)).unwrap().to_rgba8();
         let now = common::render_with(&ctx, &s, Output::Srgb8).image;
-        assert_eq!(now.dimensions(), before.dimensions(), "{file}");
-        let differ = (now.pixels().zip(before.pixels()))
-            .filter(|(a, b)| a != b)
-            .count();
+        let differ = common::pixels_differing(&now, &before, &file);
         assert_eq!(differ, 0, "{file}: {differ} pixels differ");
     }
 }

@@ -11,7 +11,6 @@ use crate::common;
 use gloss::gl::program::Sources;
 use gloss::renderer::Renderer;
 use gloss::scene::CubeRender;
-use std::process::Command;
 
 const FACES: [&str; 6] = [
     "shadow map (light 0, face +X)",
@@ -22,19 +21,6 @@ const FACES: [&str; 6] = [
     "shadow map (light 0, face -Z)",
 ];
 const LAYERED: &str = "shadow map (light 0, six faces by gl_Layer)";
-
-fn gloss(args: &[&str]) -> String {
-    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
-        .args(args)
-        .env("MESA_GL_VERSION_OVERRIDE", "3.3")
-        .env("MESA_GLSL_VERSION_OVERRIDE", "330")
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success(), "gloss {args:?}: {err}");
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
 
 #[test]
 fn a_cube_drawn_face_by_face_is_six_passes_named_by_their_faces() {
@@ -57,13 +43,13 @@ fn a_cube_drawn_face_by_face_is_six_passes_named_by_their_faces() {
     assert_eq!(r.last_times.titles, titles);
     assert_eq!(r.last_times.passes.len(), titles.len());
     // `gloss plan` lists them so, numbered in that order.
-    let plan = gloss(&["plan", "shadows-point"]);
+    let plan = common::gloss(&["plan", "shadows-point"]);
     for (i, face) in FACES.iter().enumerate() {
         let line = format!("  {}. {face} -> shadow map", i + 1);
         assert!(plan.contains(&line), "{line:?} in\n{plan}");
     }
     // `gloss trace`: each face its own pass, under its own heading.
-    let trace = gloss(&[
+    let trace = common::gloss(&[
         "trace",
         "shadows-point",
         "--technique",
@@ -86,7 +72,7 @@ fn a_cube_drawn_face_by_face_is_six_passes_named_by_their_faces() {
     // Each its own KHR_debug group, named "1. shadow map (light 0, face
     // +X) (shadow_map)": the trace shows the group's number and its name's
     // length (the name itself is a pointer to it).
-    let all = gloss(&["trace", "shadows-point", "--size", "96x54"]);
+    let all = common::gloss(&["trace", "shadows-point", "--size", "96x54"]);
     for (i, face) in FACES.iter().enumerate() {
         let name = format!("{}. {face} (shadow_map)", i + 1);
         let push = format!(
@@ -108,7 +94,7 @@ fn a_cube_drawn_by_the_geometry_shader_is_one_pass_that_says_so() {
         .map(|i| plan.title(i))
         .collect();
     assert_eq!(shadow, [LAYERED]);
-    let text = gloss(&[
+    let text = common::gloss(&[
         "plan",
         "shadows-point",
         "--set",
@@ -124,7 +110,7 @@ fn a_cube_drawn_by_the_geometry_shader_is_one_pass_that_says_so() {
 fn gloss_bench_times_each_face_under_its_name() {
     let out = std::env::temp_dir().join("gloss-bench-faces");
     let _ = std::fs::remove_dir_all(&out);
-    let table = gloss(&[
+    let table = common::gloss(&[
         "bench",
         "scenes/shadows-point.toml",
         "--vary",
@@ -159,7 +145,7 @@ fn splitting_the_cube_into_face_passes_changes_no_pixel() {
         for mode in ["six_passes", "geometry_shader"] {
             let png = dir.join(format!("face-passes-{mode}-{path}.png"));
             let set = format!("lights[0].shadow.cube={mode}");
-            gloss(&[
+            common::gloss(&[
                 "render",
                 "scenes/shadows-point.toml",
                 "--size",
@@ -177,10 +163,7 @@ fn splitting_the_cube_into_face_passes_changes_no_pixel() {
                 png.to_str().unwrap(),
             ]);
             let now = image::open(&png).unwrap().to_rgba8();
-            assert_eq!(now.dimensions(), before.dimensions());
-            let differ = (now.pixels().zip(before.pixels()))
-                .filter(|(a, b)| a != b)
-                .count();
+            let differ = common::pixels_differing(&now, &before, &format!("{mode} on {path}"));
             assert_eq!(differ, 0, "{mode} on {path}: {differ} pixels differ");
         }
     }

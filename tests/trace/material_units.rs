@@ -13,22 +13,30 @@
 use crate::common;
 use gloss::frame::units::DIFFUSE_TEXTURE;
 use gloss::scene::{Scene, Shading};
-use gloss::trace::units::trace_with_samplers;
+use gloss::trace::units::{Sampler, trace_with_samplers};
 use std::collections::BTreeSet;
 
-/// The sampler uniforms of the programs the forward pass of `s` used.
-fn forward_samplers(s: &Scene) -> Vec<Vec<String>> {
-    let ctx = crate::tracing_context();
-    let (calls, programs) = trace_with_samplers(&ctx, s).unwrap();
+/// The programs the forward pass of `s` used, each with its sampler
+/// uniforms, read back from the GL.
+fn forward_programs(ctx: &gloss::gl::Headless, s: &Scene) -> Vec<(i64, Vec<Sampler>)> {
+    let (calls, mut programs) = trace_with_samplers(ctx, s).unwrap();
     let used: BTreeSet<i64> = (calls.iter())
         .filter(|c| c.function == "glUseProgram")
         .filter(|c| c.pass.as_ref().is_some_and(|p| p.technique == "forward"))
         .filter_map(|c| c.args.first()?.parse().ok())
         .filter(|&id| id != 0)
         .collect();
-    assert!(!used.is_empty(), "no forward program");
-    (used.iter())
-        .map(|id| programs[id].iter().map(|s| s.name.clone()).collect())
+    assert!(!used.is_empty(), "{}: no forward program", s.name);
+    (used.into_iter())
+        .map(|id| (id, programs.remove(&id).unwrap()))
+        .collect()
+}
+
+/// The names of the sampler uniforms of each program the forward pass of
+/// `s` used.
+fn forward_samplers(ctx: &gloss::gl::Headless, s: &Scene) -> Vec<Vec<String>> {
+    (forward_programs(ctx, s).into_iter())
+        .map(|(_, samplers)| samplers.into_iter().map(|s| s.name).collect())
         .collect()
 }
 
@@ -48,16 +56,7 @@ fn forward_programs_read_the_diffuse_unit_only_through_the_diffuse_texture() {
         // The general shader, which has the glTF code (a frame without glTF
         // maps leaves it out: tests below).
         s.render.specialize = false;
-        let (calls, programs) = trace_with_samplers(&ctx, &s).unwrap();
-        let used: BTreeSet<i64> = (calls.iter())
-            .filter(|c| c.function == "glUseProgram")
-            .filter(|c| c.pass.as_ref().is_some_and(|p| p.technique == "forward"))
-            .filter_map(|c| c.args.first()?.parse().ok())
-            .filter(|&id| id != 0)
-            .collect();
-        assert!(!used.is_empty(), "{name} ({shading:?}): no forward program");
-        for id in used {
-            let samplers = &programs[&id];
+        for (id, samplers) in forward_programs(&ctx, &s) {
             let names: Vec<&str> = samplers.iter().map(|s| s.name.as_str()).collect();
             // The program has the glTF maps' samplers (else this checks nothing).
             // Gouraud's fragment stage reads the metallic-roughness map
@@ -95,6 +94,7 @@ fn forward_programs_read_the_diffuse_unit_only_through_the_diffuse_texture() {
 /// material emits, and `gloss plan` says which.
 #[test]
 fn the_forward_variant_has_the_gltf_code_only_where_a_material_needs_it() {
+    let ctx = crate::tracing_context();
     let gltf_samplers = ["u_metal_rough_map", "u_occlusion_map", "u_emissive_map"];
     for shading in [Shading::Phong, Shading::Gouraud] {
         let mut s = common::scene("texture-atlas.toml");
@@ -102,7 +102,7 @@ fn the_forward_variant_has_the_gltf_code_only_where_a_material_needs_it() {
         s.render.size = (48, 27);
         let plan = gloss::techniques::plan(&s).to_string();
         assert!(!plan.contains("glTF maps"), "{plan}");
-        for names in forward_samplers(&s) {
+        for names in forward_samplers(&ctx, &s) {
             assert!(
                 names.contains(&"u_diffuse_texture".to_string()),
                 "{names:?}"
@@ -118,7 +118,7 @@ fn the_forward_variant_has_the_gltf_code_only_where_a_material_needs_it() {
         s.materials[s.objects[0].material].pbr.emissive = glam::Vec3::new(0.2, 0.1, 0.0);
         let plan = gloss::techniques::plan(&s).to_string();
         assert!(plan.contains("glTF maps"), "{plan}");
-        for names in forward_samplers(&s) {
+        for names in forward_samplers(&ctx, &s) {
             assert!(
                 names.contains(&"u_metal_rough_map".to_string()),
                 "{shading:?}: {names:?}"

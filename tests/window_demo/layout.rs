@@ -2,8 +2,7 @@
 //! scene rendered at the view's size (every object of the default scene
 //! visible beside the panel), equal to a headless render at that size.
 
-use crate::{GLOSS, crate_dir, differing, drive, shot};
-use std::process::Command;
+use crate::{differing, drive, headless_render, shot};
 
 #[test]
 fn the_view_beside_the_panel_is_the_scene_at_the_views_size() {
@@ -21,19 +20,7 @@ fn the_view_beside_the_panel_is_the_scene_at_the_views_size() {
         w < 1280 - 200 && h == 720,
         "{w}x{h}: the view is beside the panel"
     );
-    let reference = dir.join("reference.png");
-    let out = Command::new(GLOSS)
-        .args(["render", "default", "--size", &format!("{w}x{h}"), "-o"])
-        .arg(&reference)
-        .current_dir(crate_dir())
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let reference = image::open(&reference).unwrap().to_rgba8();
+    let reference = headless_render(&dir, "default", &[], (w, h));
     let d = differing(&view, &reference, 3);
     assert!(
         d < 0.002,
@@ -60,19 +47,7 @@ fn render_scale_a_quarter_shows_each_rendered_pixel_as_a_block() {
     let (w, h) = view.dimensions();
     assert_eq!(h, 720);
     let (qw, qh) = (w.div_ceil(4), h.div_ceil(4));
-    let reference = dir.join("quarter.png");
-    let out = Command::new(GLOSS)
-        .args(["render", "default", "--size", &format!("{qw}x{qh}"), "-o"])
-        .arg(&reference)
-        .current_dir(crate_dir())
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let quarter = image::open(&reference).unwrap().to_rgba8();
+    let quarter = headless_render(&dir, "default", &[], (qw, qh));
     // The view's pixel (x, y from the top) is the quarter frame's pixel
     // (x / 4, counted from the bottom in GL: the rows line up from there).
     let mut off = 0;

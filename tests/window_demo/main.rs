@@ -219,6 +219,30 @@ pub fn shot(dir: &Path, log: &str, n: u32) -> image::RgbaImage {
         .to_rgba8()
 }
 
+/// `gloss render SCENE ARGS --size WxH` headless, written to
+/// DIR/reference.png and read back: what the window's view should show.
+pub fn headless_render(
+    dir: &Path,
+    scene: &str,
+    args: &[&str],
+    (w, h): (u32, u32),
+) -> image::RgbaImage {
+    let out_path = dir.join("reference.png");
+    let out = Command::new(GLOSS)
+        .args(["render", scene, "--size", &format!("{w}x{h}"), "-o"])
+        .arg(&out_path)
+        .args(args)
+        .current_dir(crate_dir())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "gloss render {scene} {args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    image::open(&out_path).unwrap().to_rgba8()
+}
+
 /// The share of pixels of `a` and `b` (of one size) that differ by more
 /// than `tolerance` in some channel.
 pub fn differing(a: &image::RgbaImage, b: &image::RgbaImage, tolerance: u8) -> f64 {

@@ -9,11 +9,9 @@
 //! clicked by name and the view compared with `gloss render --set` of the
 //! same setting.
 
-use crate::{GLOSS, crate_dir, differing, drive, shot};
+use crate::{crate_dir, differing, drive, headless_render, shot};
 use gloss::scene::Scene;
 use gloss::scene::knobs::{self, Knob};
-use std::path::Path;
-use std::process::Command;
 
 /// A line of a layout file: a widget's label, kind and rectangle.
 struct Widget {
@@ -263,20 +261,8 @@ fn click_and_render(
     );
     let (before, after) = (shot(&dir, &log, 1), shot(&dir, &log, 2));
     let (w, h) = after.dimensions();
-    let reference = dir.join("reference.png");
-    let out = Command::new(GLOSS)
-        .args(["render", scene, "--size", &format!("{w}x{h}")])
-        .args(["--set", &format!("{key}={word}"), "-o"])
-        .arg(&reference)
-        .current_dir(crate_dir())
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let reference = image::open(Path::new(&reference)).unwrap().to_rgba8();
+    let set = format!("{key}={word}");
+    let reference = headless_render(&dir, scene, &["--set", &set], (w, h));
     Some([before, after, reference])
 }
 

@@ -6,9 +6,8 @@
 //! against (0, 1, 0), and the depth view against the floor's depth worked
 //! out on the CPU).
 
-use crate::{GLOSS, bless, crate_dir, differing, drive, layout_rect, panel_pixels, shot};
+use crate::{bless, differing, drive, headless_render, layout_rect, panel_pixels, shot};
 use std::path::Path;
-use std::process::Command;
 
 /// `inspect WORDS`: press I until the inspector shows the view whose
 /// label holds WORDS (the drop-down's text in the layout).
@@ -24,24 +23,6 @@ inspect() {
 
 fn layout(dir: &Path, name: &str) -> String {
     std::fs::read_to_string(dir.join(name)).unwrap_or_default()
-}
-
-/// `gloss render SCENE ARGS --size WxH` headless, read back.
-fn render(dir: &Path, scene: &str, args: &[&str], (w, h): (u32, u32)) -> image::RgbaImage {
-    let out_path = dir.join("reference.png");
-    let out = Command::new(GLOSS)
-        .args(["render", scene, "--size", &format!("{w}x{h}"), "-o"])
-        .arg(&out_path)
-        .args(args)
-        .current_dir(crate_dir())
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "gloss render {scene} {args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    image::open(&out_path).unwrap().to_rgba8()
 }
 
 /// docs/images/demo-panel.png and demo-hidden.png: mixed-lights on the
@@ -153,7 +134,7 @@ fn the_inspectors_views_are_the_targets() {
     for (n, target, picture) in views {
         let view = shot(&dir, &log, n);
         let args = ["--path", "deferred", "--target", target];
-        let reference = render(&dir, "mixed-lights", &args, view.dimensions());
+        let reference = headless_render(&dir, "mixed-lights", &args, view.dimensions());
         let d = differing(&view, &reference, 3);
         assert!(
             d < 0.005,

@@ -5,6 +5,9 @@
 
 use std::process::Command;
 
+#[path = "common/mod.rs"]
+mod common;
+
 #[test]
 fn bench_writes_table_csv_and_plot() {
     let out = std::env::temp_dir().join("gloss-bench-test");
@@ -325,22 +328,17 @@ fn bench_prints_the_far_fields_bound_and_every_pass_against_the_floor() {
 
 #[test]
 fn bench_measures_the_particles_both_ways() {
-    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
-        .args([
-            "bench",
-            "--particles",
-            "200",
-            "--frames",
-            "1",
-            "--warmup",
-            "0",
-        ])
-        .args(["--size", "96x54"])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&o.stdout);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = common::gloss(&[
+        "bench",
+        "--particles",
+        "200",
+        "--frames",
+        "1",
+        "--warmup",
+        "0",
+        "--size",
+        "96x54",
+    ]);
     let rows: Vec<&str> = stdout
         .lines()
         .filter(|l| l.trim_start().starts_with("200 ") && l.contains(" gl"))
@@ -357,22 +355,17 @@ fn bench_measures_the_particles_both_ways() {
 
 #[test]
 fn bench_measures_instancing_both_ways_with_equal_images() {
-    let o = Command::new(env!("CARGO_BIN_EXE_gloss"))
-        .args([
-            "bench",
-            "--instancing",
-            "300",
-            "--frames",
-            "1",
-            "--warmup",
-            "0",
-        ])
-        .args(["--size", "96x54"])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&o.stdout);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = common::gloss(&[
+        "bench",
+        "--instancing",
+        "300",
+        "--frames",
+        "1",
+        "--warmup",
+        "0",
+        "--size",
+        "96x54",
+    ]);
     let rows: Vec<&str> = (stdout.lines())
         .filter(|l| l.trim_start().starts_with("300 ") && !l.contains("rocks:"))
         .collect();

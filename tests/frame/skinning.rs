@@ -236,22 +236,17 @@ fn a_files_weight_warnings_reach_the_scene_and_its_errors_name_the_file() {
 
 #[test]
 fn bench_measures_skinning_on_the_gpu_against_the_cpu() {
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gloss"))
-        .args([
-            "bench",
-            "--skinning",
-            "900",
-            "--frames",
-            "1",
-            "--warmup",
-            "0",
-        ])
-        .args(["--size", "96x54"])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&o.stdout);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = common::gloss(&[
+        "bench",
+        "--skinning",
+        "900",
+        "--frames",
+        "1",
+        "--warmup",
+        "0",
+        "--size",
+        "96x54",
+    ]);
     // One arm of 903 vertices, each way: the GPU gets 3 joint matrices (192
     // bytes), the CPU sends 32 bytes a vertex.
     let rows: Vec<&str> = (stdout.lines())

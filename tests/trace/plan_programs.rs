@@ -7,6 +7,10 @@
 //! notes the `#define`s of every shader source the driver was given: the
 //! test fails if the plan or a pass drifts from the other.
 //!
+//! The demo's switches that change the set (render.specialize, the path,
+//! render.ibl, render.normal_mapping, through `Renderer::set_render_settings`)
+//! give a next frame that draws with the programs the new plan names.
+//!
 //! And the shadow passes build their caster programs on first use
 //! (src/techniques/shadows/casters.rs): a frame without alpha-tested casters
 //! has no alpha-test caster program at all (counted among the GL's live
@@ -78,7 +82,17 @@ fn used_by_pass(calls: &[Call]) -> BTreeMap<usize, BTreeSet<Defines>> {
 /// of the passes checked, and the programs' roles.
 fn check(ctx: &Headless, what: &str, s: &Scene) -> (BTreeSet<String>, BTreeSet<String>) {
     let (calls, plan, _r) = first_frame(ctx, s);
-    let used = used_by_pass(&calls);
+    compare(what, s, &calls, &plan)
+}
+
+/// `check` for a frame of `s` already traced.
+fn compare(
+    what: &str,
+    s: &Scene,
+    calls: &[Call],
+    plan: &FramePlan,
+) -> (BTreeSet<String>, BTreeSet<String>) {
+    let used = used_by_pass(calls);
     let printed = plan.to_string();
     let mut checked = BTreeSet::new();
     let mut roles = BTreeSet::new();
@@ -244,4 +258,75 @@ fn a_frame_builds_only_the_caster_programs_it_draws_with() {
 
 fn highest_program(id: i64) -> glow::NativeProgram {
     glow::NativeProgram(std::num::NonZeroU32::new(id as u32).unwrap())
+}
+
+/// Every program the plan names, as a set of define lists.
+fn named(plan: &FramePlan) -> BTreeSet<(&'static str, Defines)> {
+    (plan.passes.iter().flat_map(|p| p.programs.iter()))
+        .map(|g| {
+            let d = sorted(g.defines.iter().map(|(k, v)| (k.to_string(), v.clone())));
+            (g.role, d)
+        })
+        .collect()
+}
+
+/// The demo's switches (`Renderer::set_render_settings`, what its panel
+/// calls) that change a pass's programs: the next frame draws with the
+/// programs the new plan names, built then.
+#[test]
+fn a_switch_that_changes_the_programs_gets_those_the_plan_names() {
+    use gloss::scene::{RenderPath, RenderSettings};
+    let ctx = crate::tracing_context();
+    type Switch = (&'static str, fn(&mut RenderSettings));
+    let cases: [(&str, RenderPath, &[Switch]); 3] = [
+        (
+            "model-loading",
+            RenderPath::Deferred,
+            &[
+                ("general", |r| r.specialize = false),
+                ("specialised", |r| r.specialize = true),
+                ("forward", |r| r.path = RenderPath::Forward),
+                ("deferred", |r| r.path = RenderPath::Deferred),
+            ],
+        ),
+        (
+            "ibl",
+            RenderPath::Deferred,
+            &[
+                ("IBL off", |r| r.ibl = false),
+                ("IBL on", |r| r.ibl = true),
+                ("forward", |r| r.path = RenderPath::Forward),
+            ],
+        ),
+        (
+            "bump-mapping",
+            RenderPath::Deferred,
+            &[
+                ("normal mapping off", |r| r.normal_mapping = false),
+                ("normal mapping on", |r| r.normal_mapping = true),
+            ],
+        ),
+    ];
+    for (name, path, switches) in cases {
+        let mut s = scene(name, |s| {
+            s.render.path = path;
+            s.render.frustum_culling = false;
+        });
+        let (calls, plan, mut r) = first_frame(&ctx, &s);
+        compare(name, &s, &calls, &plan);
+        let mut before = named(&plan);
+        for (what, switch) in switches {
+            switch(&mut s.render);
+            r.set_render_settings(s.render.clone()).unwrap();
+            trace::start();
+            let drawn = r.render(&s.camera);
+            let calls = trace::stop();
+            drawn.unwrap();
+            let what = format!("{name}, then {what}");
+            compare(&what, &s, &calls, &r.plan);
+            let after = named(&r.plan);
+            assert_ne!(before, after, "{what}: no program changed");
+            before = after;
+        }
+    }
 }

@@ -24,20 +24,14 @@ impl PlanProgram {
         PlanProgram { role, defines }
     }
 
-    /// The defines as `gloss plan` prints them: `NO_PBR`, `VARIANT_POINT=0`
-    /// (a define whose value is 1 by its name alone), or "no defines".
+    /// The defines as `gloss plan` prints them: `NO_PBR=1 VARIANT_POINT=0`,
+    /// or "no defines".
     pub fn defines_text(&self) -> String {
         if self.defines.is_empty() {
             return "no defines (the general program)".into();
         }
         (self.defines.iter())
-            .map(|(k, v)| {
-                if v == "1" {
-                    k.to_string()
-                } else {
-                    format!("{k}={v}")
-                }
-            })
+            .map(|(k, v)| format!("{k}={v}"))
             .collect::<Vec<_>>()
             .join(" ")
     }
@@ -108,7 +102,7 @@ impl CompositeNeeds {
 }
 
 /// A pass's programs as `gloss plan` prints them, under the pass, wrapped:
-/// "     program (G-buffer): NO_PBR NO_SPECULAR_MAP".
+/// "     program (G-buffer): NO_PBR=1 NO_SPECULAR_MAP=1".
 pub fn print(f: &mut std::fmt::Formatter<'_>, programs: &[PlanProgram]) -> std::fmt::Result {
     const WIDTH: usize = 100;
     for p in programs {

@@ -155,8 +155,11 @@ fn way(face: Option<usize>) -> usize {
     }
 }
 
+/// A program's stages: (GL_VERTEX_SHADER, "shadows/shadow_map.vert"), ...
+type Stages = &'static [(u32, &'static str)];
+
 /// The stages of each way, and their `#define`s.
-fn stages(way: usize) -> (&'static [(u32, &'static str)], Vec<(&'static str, String)>) {
+fn stages(way: usize) -> (Stages, Vec<(&'static str, String)>) {
     match way {
         0 => (
             &[

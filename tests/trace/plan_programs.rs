@@ -1,6 +1,7 @@
 //! `gloss plan` names every program a pass draws with (src/frame/plan_programs.rs):
 //! the G-buffer's material variant, the composite's, forward's lighting
-//! variant (VARIANT_FORWARD_GLTF among its defines) and the shadow pass's
+//! variant (VARIANT_FORWARD_GLTF among its defines), deferred shading's
+//! (both forms) and the shadow pass's
 //! depth-only and alpha-test caster programs. Here the plan's defines are
 //! compared with those of the programs each pass of an executed frame put in
 //! use (glUseProgram in the pass), read back from the recording layer, which
@@ -156,6 +157,12 @@ fn the_plan_names_the_defines_of_every_program_the_frame_uses() {
         ("ibl, deferred", scene("ibl", deferred)),
         ("ambient-occlusion", scene("ambient-occlusion", |_| {})),
         ("deferred-shading", scene("deferred-shading", |_| {})),
+        (
+            "deferred-shading, single pass",
+            scene("deferred-shading", |s| {
+                s.render.deferred_lights = gloss::scene::DeferredLights::SinglePass
+            }),
+        ),
         ("light-prepass", scene("light-prepass", |_| {})),
         (
             "model-loading (alpha-tested leaves)",
@@ -185,10 +192,19 @@ fn the_plan_names_the_defines_of_every_program_the_frame_uses() {
         "forward",
         "shadow map",
         "cascaded shadow map",
+        "lighting",
     ] {
         assert!(passes.contains(pass), "no {pass} pass checked: {passes:?}");
     }
-    for role in ["depth only", "alpha test", "G-buffer", "composite", "Phong"] {
+    for role in [
+        "depth only",
+        "alpha test",
+        "G-buffer",
+        "composite",
+        "Phong",
+        "per light",
+        "single pass",
+    ] {
         assert!(roles.contains(role), "no {role} program checked: {roles:?}");
     }
 }

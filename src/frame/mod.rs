@@ -49,6 +49,7 @@ pub mod particles;
 pub mod pass;
 pub mod plan;
 pub mod plan_graph;
+pub mod plan_programs;
 pub mod post;
 pub mod shadows;
 pub mod skins;

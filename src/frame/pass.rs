@@ -3,6 +3,8 @@
 //! make their passes (`Technique::passes`), the plan orders them, the
 //! renderer runs them.
 
+use crate::frame::plan_programs::{CompositeNeeds, PlanProgram};
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pass {
     pub name: &'static str,
@@ -41,6 +43,12 @@ pub struct Pass {
     /// for a point light's shadow drawn one face per pass; `ALL_FACES`
     /// for a pass that reaches all six at once (gl_Layer); None otherwise.
     pub face: Option<usize>,
+    /// The programs it draws with, each with its `#define`s
+    /// (src/frame/plan_programs.rs); empty where a pass does not say.
+    pub programs: Vec<PlanProgram>,
+    /// The composite's needs, but its target's: the plan completes them
+    /// and names the program once the target is known.
+    pub composite: Option<CompositeNeeds>,
 }
 
 /// The cube faces as GL orders them (GL_TEXTURE_CUBE_MAP_POSITIVE_X + i).
@@ -72,6 +80,21 @@ impl Pass {
             reads: Vec::new(),
             variant: None,
             face: None,
+            programs: Vec::new(),
+            composite: None,
+        }
+    }
+
+    /// The same pass, drawing with `programs`.
+    pub fn with_programs(self, programs: Vec<PlanProgram>) -> Pass {
+        Pass { programs, ..self }
+    }
+
+    /// The same pass, the composite with `needs` (its target's to come).
+    pub fn with_composite(self, needs: CompositeNeeds) -> Pass {
+        Pass {
+            composite: Some(needs),
+            ..self
         }
     }
 

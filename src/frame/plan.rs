@@ -178,6 +178,16 @@ impl FramePlan {
             format,
             scene.post.is_empty() && world_depth,
         ));
+        // The composite's program, now that its target is known.
+        for p in &mut passes {
+            if let (Some(needs), Some(t)) =
+                (p.composite, targets.iter().find(|t| t.name == p.target))
+            {
+                let depth = !matches!(t.depth, crate::frame::targets::Depth::None);
+                let srgb = t.colors.first().is_some_and(|c| c.1 == glow::SRGB8_ALPHA8);
+                p.programs = vec![needs.at_output(depth, srgb, true).program()];
+            }
+        }
         FramePlan {
             path: scene.render.path,
             targets,
@@ -340,6 +350,7 @@ impl std::fmt::Display for FramePlan {
             if let Some(v) = &p.variant {
                 writeln!(f, "     shader variant: {v}")?;
             }
+            crate::frame::plan_programs::print(f, &p.programs)?;
         }
         let d = &self.depth_precision;
         writeln!(

@@ -19,6 +19,7 @@ mod common;
 mod docs_listings;
 mod material_units;
 mod order;
+mod plan_programs;
 mod registry;
 mod try_it;
 mod units;

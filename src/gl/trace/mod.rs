@@ -18,7 +18,7 @@ mod shim_macro;
 mod shims;
 mod values;
 
-pub use record::{Call, PassLabel, Site, enter_pass, leave_pass, start, stop};
+pub use record::{Call, PassLabel, Site, enter_pass, leave_pass, program_defines, start, stop};
 pub use values::constant_name;
 
 use std::ffi::c_void;

@@ -56,6 +56,10 @@ struct Recorder {
     /// The program in use, and every uniform location looked up, by program.
     program: i64,
     uniforms: HashMap<(i64, i64), String>,
+    /// The `#define`s gloss put after each shader's `#version` line, by
+    /// shader, and by program (its shaders'), noted always like the uniforms.
+    shader_defines: HashMap<i64, Vec<(String, String)>>,
+    program_defines: HashMap<i64, Vec<(String, String)>>,
 }
 
 thread_local! {
@@ -124,8 +128,60 @@ pub(super) fn record(function: &'static str, args: &[(Kind, Raw)], result: Optio
     RECORDING.with(|r| r.set(true));
 }
 
-/// Note the program in use and the uniforms' locations; show a uniform's
-/// location as its name.
+/// The `#define`s program `id` was built with (gloss's, inserted after
+/// `#version`: src/gl/program.rs), as the driver was given them; None for
+/// a program this thread's recording layer did not see made.
+pub fn program_defines(id: i64) -> Option<Vec<(String, String)>> {
+    RECORDER.with(|r| r.borrow().program_defines.get(&id).cloned())
+}
+
+/// The `#define` lines right after the `#version` line of `text`.
+fn inserted_defines(text: &str) -> Vec<(String, String)> {
+    let mut lines = text
+        .lines()
+        .skip_while(|l| !l.trim_start().starts_with("#version"));
+    lines.next();
+    lines
+        .map_while(|l| l.trim_start().strip_prefix("#define "))
+        .map(|d| {
+            let (k, v) = d.trim().split_once(' ').unwrap_or((d.trim(), ""));
+            (k.to_string(), v.trim().to_string())
+        })
+        .collect()
+}
+
+/// The source glShaderSource(shader, count, strings, lengths) was given.
+///
+/// # Safety
+/// Called with that call's arguments, right after it, while they are valid.
+unsafe fn shader_text(count: i64, strings: usize, lengths: usize) -> String {
+    let mut text = Vec::new();
+    if strings == 0 {
+        return String::new();
+    }
+    for i in 0..count.max(0) as usize {
+        unsafe {
+            let s = *(strings as *const *const u8).add(i);
+            if s.is_null() {
+                continue;
+            }
+            let len = if lengths == 0 {
+                -1
+            } else {
+                *(lengths as *const i32).add(i)
+            };
+            if len < 0 {
+                text.extend_from_slice(std::ffi::CStr::from_ptr(s.cast()).to_bytes());
+            } else {
+                text.extend_from_slice(std::slice::from_raw_parts(s, len as usize));
+            }
+        }
+    }
+    String::from_utf8_lossy(&text).into_owned()
+}
+
+/// Note the program in use, the uniforms' locations and the programs'
+/// `#define`s; show a uniform's location as its name.
 fn name_uniforms(
     r: &mut Recorder,
     function: &str,
@@ -136,6 +192,28 @@ fn name_uniforms(
     let first = args.first().map(|a| a.1.int());
     match (function, first) {
         ("glUseProgram", Some(p)) => r.program = p,
+        ("glCreateProgram", _) => {
+            if let Some(p) = result {
+                r.program_defines.insert(p.int(), Vec::new());
+            }
+        }
+        ("glShaderSource", Some(shader)) => {
+            if let [_, (_, count), (_, Raw::Ptr(strings)), (_, lengths)] = args {
+                let lengths = match lengths {
+                    Raw::Ptr(l) => *l,
+                    _ => 0,
+                };
+                // SAFETY: the call's own arguments, which the driver just read.
+                let text = unsafe { shader_text(count.int(), *strings, lengths) };
+                r.shader_defines.insert(shader, inserted_defines(&text));
+            }
+        }
+        ("glAttachShader", Some(p)) => {
+            let shader = args.get(1).map(|a| a.1.int());
+            if let Some(d) = shader.and_then(|s| r.shader_defines.get(&s)).cloned() {
+                r.program_defines.insert(p, d);
+            }
+        }
         ("glGetUniformLocation", Some(p)) => {
             if let (Some(name), Some(loc)) = (shown.get(1), result) {
                 let name = name.trim_matches('"').to_string();

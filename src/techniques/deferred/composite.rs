@@ -31,6 +31,7 @@ use crate::frame::gbuffer;
 use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::plan_programs::CompositeNeeds;
 use crate::frame::post::world_target;
 use crate::frame::shadows;
 use crate::frame::targets::{LIGHT_ACCUMULATION, TargetDesc};
@@ -89,7 +90,8 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
                 file!(),
             )
             .without_depth()
-            .reading(&reads),
+            .reading(&reads)
+            .with_composite(scene_needs(scene, image_based_lighting::wanted(scene))),
         ],
         RenderPath::Forward | RenderPath::Prepass => vec![],
     }
@@ -107,7 +109,7 @@ const STAGES: [(u32, &str); 2] = [
 
 struct Composite {
     build: LaterPrograms,
-    /// The programs, by [`variant`], each built the first frame that needs
+    /// The programs, by `CompositeNeeds::index`, each built the first frame that needs
     /// it (a scene's frames need one or two of the eight): writing the
     /// G-buffer's depth into the output (gl_FragDepth, for the passes that
     /// draw after it) or colour only (the output has no depth buffer:
@@ -122,48 +124,30 @@ struct Composite {
     programs: [OnceCell<Program>; 64],
 }
 
-/// What a frame's composite needs.
-#[derive(Clone, Copy)]
-struct Needs {
-    depth: bool,
-    tints: bool,
-    hardware: bool,
-    ibl: bool,
-    ambient_occlusion: bool,
-    emission: bool,
+/// The composite's needs in `scene` but its target's (which the plan and
+/// the frame each complete with `CompositeNeeds::at_output`): cascade
+/// tints, and the ambient term's parts (all of them with render.specialize
+/// off); `ibl`: the frame has image-based lighting's maps.
+fn scene_needs(scene: &Scene, ibl: bool) -> CompositeNeeds {
+    let general = !scene.render.specialize;
+    CompositeNeeds {
+        depth: false,
+        tints: shadows::cascade_tints(scene),
+        hardware: false,
+        ibl: general || ibl,
+        ambient_occlusion: general || super::ambient_light::result_target(scene).is_some(),
+        emission: gbuffer::MaterialVariant::of(scene).emission,
+    }
 }
 
-/// Which of the composite's programs.
-fn variant(n: Needs) -> usize {
-    [
-        n.depth,
-        n.tints,
-        n.hardware,
-        n.ibl,
-        n.ambient_occlusion,
-        n.emission,
-    ]
-    .iter()
-    .fold(0, |i, &on| i * 2 + usize::from(on))
-}
-
-/// The variant `f` needs: depth written, cascade tints, sRGB by GL (its
-/// output), and the ambient term's parts (all of them with render.specialize off).
-fn needs(f: &Frame) -> Needs {
+/// The variant `f` needs: `scene_needs`, with depth written where its
+/// output has a depth buffer and sRGB by GL where the output is sRGB.
+fn needs(f: &Frame) -> CompositeNeeds {
     let output = f.targets.get(world_target(f.scene));
     let depth = output.depth_stencil.is_some() || output.shared_depth.is_some();
-    let tints = shadows::cascade_tints(f.scene);
-    // GL encodes where the output is sRGB and wants encoded values.
     let srgb = output.colors[0].internal_format == glow::SRGB8_ALPHA8;
-    let general = !f.scene.render.specialize;
-    Needs {
-        depth,
-        tints,
-        hardware: f.uniforms.output_srgb && srgb,
-        ibl: general || f.draws.environment.ibl.is_some(),
-        ambient_occlusion: general || super::ambient_light::result_target(f.scene).is_some(),
-        emission: gbuffer::MaterialVariant::of(f.scene).emission,
-    }
+    let ibl = f.draws.environment.ibl.is_some();
+    scene_needs(f.scene, ibl).at_output(depth, srgb, f.uniforms.output_srgb)
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
@@ -175,24 +159,13 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
 
 impl Composite {
     /// The program for `n`, built now if no frame has needed it yet.
-    fn program(&self, n: Needs) -> Result<&Program> {
-        let i = variant(n);
+    fn program(&self, n: CompositeNeeds) -> Result<&Program> {
+        let i = n.index();
         if let Some(p) = self.programs[i].get() {
             return Ok(p);
         }
         let tints = n.tints;
-        let defines: Vec<(&str, String)> = [
-            (n.depth, "WRITE_DEPTH"),
-            (n.tints, "CASCADE_TINTS"),
-            (n.hardware, "HARDWARE_SRGB"),
-            (!n.ibl, "NO_IBL"),
-            (!n.ambient_occlusion, "NO_AMBIENT_OCCLUSION"),
-            (!n.emission, "NO_EMISSION"),
-        ]
-        .into_iter()
-        .filter(|(on, _)| *on)
-        .map(|(_, name)| (name, "1".to_string()))
-        .collect();
+        let defines = n.defines();
         let program = self.build.build_with(&STAGES, &defines)?;
         if tints {
             program.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);

@@ -31,6 +31,7 @@
 use crate::frame::gbuffer;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::plan_programs::PlanProgram;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
 use crate::frame::uniforms::LIGHTS_BINDING;
@@ -82,11 +83,17 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     } else {
         &[gbuffer::NAME]
     };
-    let variant = LightingVariant::of(scene, lights).describe();
+    // Its program, the form's, built with the lighting variant's defines.
+    let variant = LightingVariant::of(scene, lights);
+    let role = match scene.render.deferred_lights {
+        DeferredLights::PerLight => "per light",
+        DeferredLights::SinglePass => "single pass",
+    };
     vec![
         Pass::new("lighting", LIGHT_ACCUMULATION, draws, file!())
             .reading(reads)
-            .with_variant(variant),
+            .with_variant(variant.describe())
+            .with_programs(vec![PlanProgram::new(role, variant.defines())]),
     ]
 }
 

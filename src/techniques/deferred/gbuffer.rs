@@ -21,6 +21,7 @@ use crate::frame::gbuffer::MaterialVariant;
 use crate::frame::gbuffer_slim;
 use crate::frame::lights::FrameLights;
 use crate::frame::plan::Pass;
+use crate::frame::plan_programs::PlanProgram;
 use crate::frame::targets::{Depth, TargetDesc};
 use crate::frame::technique::LaterPrograms;
 use crate::frame::uniforms::unit;
@@ -96,12 +97,20 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
             .unwrap_or_default(),
         _ => String::new(),
     };
-    vec![Pass::new(
-        "gbuffer",
-        gbuffer::NAME,
-        format!("{n} objects ({what}{specular}{normal}; {bytes} bytes/px)"),
-        file!(),
-    )]
+    // Its program: the layout, the normal's encoding (the target's, as
+    // `needs` reads it) and the materials' variant.
+    let thin = layout(scene) == Some(true);
+    let material = MaterialVariant::of(scene);
+    let defines = defines(thin, gbuffer::octahedral(scene), material);
+    vec![
+        Pass::new(
+            "gbuffer",
+            gbuffer::NAME,
+            format!("{n} objects ({what}{specular}{normal}; {bytes} bytes/px)"),
+            file!(),
+        )
+        .with_programs(vec![PlanProgram::new("G-buffer", defines)]),
+    ]
 }
 
 fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
@@ -143,6 +152,19 @@ fn needs(f: &Frame) -> (bool, bool, MaterialVariant) {
     (thin, packed, MaterialVariant::of(f.scene))
 }
 
+/// The `#define`s of the program for (thin, packed normal, material
+/// variant): what the pass builds, and what the plan names.
+fn defines(thin: bool, packed: bool, material: MaterialVariant) -> Vec<(&'static str, String)> {
+    let mut defines = material.defines();
+    if thin {
+        defines.push(("THIN_GBUFFER", "1".into()));
+    }
+    if packed {
+        defines.push(("OCTAHEDRAL_NORMALS", "1".into()));
+    }
+    defines
+}
+
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     Ok(Box::new(GBufferPass {
         build: p.later(),
@@ -157,14 +179,9 @@ impl GBufferPass {
         if let Some(p) = self.programs[i].get() {
             return Ok(p);
         }
-        let mut defines = material.defines();
-        if thin {
-            defines.push(("THIN_GBUFFER", "1".into()));
-        }
-        if packed {
-            defines.push(("OCTAHEDRAL_NORMALS", "1".into()));
-        }
-        let program = self.build.build_with(&STAGES, &defines)?;
+        let program = self
+            .build
+            .build_with(&STAGES, &defines(thin, packed, material))?;
         Ok(self.programs[i].get_or_init(|| program))
     }
 }

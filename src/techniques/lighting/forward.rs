@@ -28,6 +28,7 @@ use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::ltc_area_lights;
 use crate::frame::plan::Pass;
+use crate::frame::plan_programs::PlanProgram;
 use crate::frame::post::world_target;
 use crate::frame::shadows;
 use crate::frame::targets::TargetDesc;
@@ -96,7 +97,17 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     );
     let pass = Pass::new("forward", world_target(scene), draws, file!());
     // Every shading mode's program is specialised to the frame (src/frame/variant.rs).
-    vec![pass.with_variant(LightingVariant::of(scene, lights).describe())]
+    // Its program is the shading mode's, built with the variant's defines.
+    let variant = LightingVariant::of(scene, lights);
+    let role = match scene.render.shading {
+        Shading::Phong => "Phong",
+        Shading::Gouraud => "Gouraud",
+        Shading::Flat => "flat",
+    };
+    vec![
+        pass.with_variant(variant.describe())
+            .with_programs(vec![PlanProgram::new(role, variant.defines())]),
+    ]
 }
 
 fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {

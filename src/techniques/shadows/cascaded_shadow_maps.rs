@@ -28,7 +28,7 @@
 //! glCullFace(GL_FRONT); restores no depth test, GL_LESS, no depth clamp,
 //! no polygon offset, no culling, GL_BACK, GL_CCW.
 
-use super::casters::{CasterPrograms, draw_casters};
+use super::casters::{CasterPrograms, draw_casters, plan_programs};
 use super::depth_pass;
 use super::shadow_map::transparent;
 use crate::frame::lights::FrameLights;
@@ -83,6 +83,7 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
             Pass::new("cascaded shadow map", "shadow map", draws, file!())
                 .about(c.light, k)
                 .step(k + 1)
+                .with_programs(plan_programs(scene, &[]))
         })
         .collect()
 }
@@ -100,11 +101,15 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
         (glow::VERTEX_SHADER, "shadows/shadow_map.vert"),
         (glow::FRAGMENT_SHADER, "shadows/shadow_map.frag"),
     ];
-    let flat = CasterPrograms::build(p, &stages, &[])?;
+    let flat = CasterPrograms::new(p, &stages, &[]);
     Ok(Box::new(CascadedShadowMaps { flat }))
 }
 
 impl RunPasses for CascadedShadowMaps {
+    fn prepare(&self, _: &Pass, f: &Frame) -> Result<()> {
+        self.flat.prepare(f.scene)
+    }
+
     fn run(&self, pass: &Pass, f: &Frame) {
         let gl = f.gl;
         let index = (f.shadows.maps.iter()).position(|(c, _)| c.cascaded() && c.light == pass.item);

@@ -28,7 +28,7 @@
 //! depth clamp, no polygon offset, no culling, GL_BACK, GL_CCW, and no
 //! texture or sampler on unit DIFFUSE_TEXTURE (unit 0 active).
 
-use super::casters::{CasterPrograms, draw_casters};
+use super::casters::{CasterPrograms, draw_casters, plan_programs};
 use super::depth_pass;
 use crate::frame::lights::FrameLights;
 use crate::frame::pass::{ALL_FACES, CUBE_FACES};
@@ -90,7 +90,14 @@ fn passes(scene: &Scene, _: &FrameLights) -> Vec<Pass> {
             (true, CubeRender::GeometryShader) => passes.push(pass.face(ALL_FACES)),
         }
     }
-    passes
+    // The caster programs each pass draws with (casters.rs).
+    (passes.into_iter())
+        .map(|p| {
+            let (_, defines) = stages(way(p.face));
+            let programs = plan_programs(scene, &defines);
+            p.with_programs(programs)
+        })
+        .collect()
 }
 
 pub(super) fn transparent(scene: &Scene) -> usize {
@@ -130,38 +137,78 @@ fn targets(_: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
     vec![]
 }
 
-/// Each with its depth-only program for opaque casters (casters.rs).
+/// The three ways of drawing a map, each with its depth-only program for
+/// opaque casters and its alpha-test program (casters.rs), built on first use.
 struct ShadowMap {
     flat: CasterPrograms,
     cube: CasterPrograms,
     cube_layered: CasterPrograms,
 }
 
+/// Which way pass `face` (`Pass::face`) is drawn: a 2D map, one face of a
+/// cube, or the whole cube by gl_Layer; 0, 1, 2.
+fn way(face: Option<usize>) -> usize {
+    match face {
+        None => 0,
+        Some(ALL_FACES) => 2,
+        Some(_) => 1,
+    }
+}
+
+/// A program's stages: (GL_VERTEX_SHADER, "shadows/shadow_map.vert"), ...
+type Stages = &'static [(u32, &'static str)];
+
+/// The stages of each way, and their `#define`s.
+fn stages(way: usize) -> (Stages, Vec<(&'static str, String)>) {
+    match way {
+        0 => (
+            &[
+                (glow::VERTEX_SHADER, "shadows/shadow_map.vert"),
+                (glow::FRAGMENT_SHADER, "shadows/shadow_map.frag"),
+            ],
+            vec![],
+        ),
+        1 => (
+            &[
+                (glow::VERTEX_SHADER, "shadows/shadow_cube.vert"),
+                (glow::FRAGMENT_SHADER, "shadows/shadow_cube.frag"),
+            ],
+            vec![],
+        ),
+        _ => (
+            &[
+                (glow::VERTEX_SHADER, "shadows/shadow_cube.vert"),
+                (glow::GEOMETRY_SHADER, "shadows/shadow_cube.geom"),
+                (glow::FRAGMENT_SHADER, "shadows/shadow_cube.frag"),
+            ],
+            vec![("LAYERED", "1".into())],
+        ),
+    }
+}
+
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
-    let flat = [
-        (glow::VERTEX_SHADER, "shadows/shadow_map.vert"),
-        (glow::FRAGMENT_SHADER, "shadows/shadow_map.frag"),
-    ];
-    let flat = CasterPrograms::build(p, &flat, &[])?;
-    let cube = [
-        (glow::VERTEX_SHADER, "shadows/shadow_cube.vert"),
-        (glow::FRAGMENT_SHADER, "shadows/shadow_cube.frag"),
-    ];
-    let cube = CasterPrograms::build(p, &cube, &[])?;
-    let layered = [
-        (glow::VERTEX_SHADER, "shadows/shadow_cube.vert"),
-        (glow::GEOMETRY_SHADER, "shadows/shadow_cube.geom"),
-        (glow::FRAGMENT_SHADER, "shadows/shadow_cube.frag"),
-    ];
-    let cube_layered = CasterPrograms::build(p, &layered, &[("LAYERED", "1".into())])?;
+    let programs = |way| {
+        let (stages, defines) = stages(way);
+        CasterPrograms::new(p, stages, &defines)
+    };
     Ok(Box::new(ShadowMap {
-        flat,
-        cube,
-        cube_layered,
+        flat: programs(0),
+        cube: programs(1),
+        cube_layered: programs(2),
     }))
 }
 
+impl ShadowMap {
+    fn programs(&self, pass: &Pass) -> &CasterPrograms {
+        [&self.flat, &self.cube, &self.cube_layered][way(pass.face)]
+    }
+}
+
 impl RunPasses for ShadowMap {
+    fn prepare(&self, pass: &Pass, f: &Frame) -> Result<()> {
+        self.programs(pass).prepare(f.scene)
+    }
+
     fn run(&self, pass: &Pass, f: &Frame) {
         let gl = f.gl;
         let index = f
@@ -183,11 +230,7 @@ impl RunPasses for ShadowMap {
             // 01 §8.5.1), front-face culling: depth_pass.rs.
             depth_pass::set(gl, &s);
 
-            let programs = match (caster.cube, s.cube) {
-                (false, _) => &self.flat,
-                (true, CubeRender::SixPasses) => &self.cube,
-                (true, CubeRender::GeometryShader) => &self.cube_layered,
-            };
+            let programs = self.programs(pass);
             // A 2D map (one face), or one face of the cube: one framebuffer,
             // the face's view-projection. Or the whole cube attached as a
             // layered image: one clear clears all six faces, one draw

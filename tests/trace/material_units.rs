@@ -64,10 +64,26 @@ const MATERIAL_UNITS: [(&str, u32); 6] = [
 #[test]
 fn every_program_with_material_code_reads_each_map_on_its_own_unit() {
     let cases = [
-        ("texture-filtering.toml", Some(RenderPath::Deferred), "gbuffer"),
-        ("texture-filtering.toml", Some(RenderPath::Prepass), "gbuffer"),
-        ("texture-filtering.toml", Some(RenderPath::Prepass), "deferred_lighting"),
-        ("texture-filtering.toml", Some(RenderPath::Forward), "forward"),
+        (
+            "texture-filtering.toml",
+            Some(RenderPath::Deferred),
+            "gbuffer",
+        ),
+        (
+            "texture-filtering.toml",
+            Some(RenderPath::Prepass),
+            "gbuffer",
+        ),
+        (
+            "texture-filtering.toml",
+            Some(RenderPath::Prepass),
+            "deferred_lighting",
+        ),
+        (
+            "texture-filtering.toml",
+            Some(RenderPath::Forward),
+            "forward",
+        ),
         ("transparency.toml", None, "transparency"),
         ("oit.toml", None, "weighted_blended"),
         ("oit-depth-peeling.toml", None, "depth_peeling"),
@@ -84,12 +100,18 @@ fn every_program_with_material_code_reads_each_map_on_its_own_unit() {
                 .filter(|(_, samplers)| samplers.iter().any(|x| x.name == "u_diffuse_texture"))
                 .collect();
             let case = format!("{name} ({path:?}, {technique}, specialize {specialize})");
-            assert!(!with_material.is_empty(), "{case}: no program with material code");
+            assert!(
+                !with_material.is_empty(),
+                "{case}: no program with material code"
+            );
             for (id, samplers) in with_material {
                 let names: Vec<&str> = samplers.iter().map(|x| x.name.as_str()).collect();
                 if !specialize {
                     for map in ["u_metal_rough_map", "u_occlusion_map", "u_emissive_map"] {
-                        assert!(names.contains(&map), "{case}: program {id} has no {map}: {names:?}");
+                        assert!(
+                            names.contains(&map),
+                            "{case}: program {id} has no {map}: {names:?}"
+                        );
                     }
                 }
                 for x in &samplers {

@@ -35,8 +35,8 @@ use crate::frame::technique::LaterPrograms;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
-use crate::scene::knobs;
 use crate::scene::AlphaTest;
+use crate::scene::knobs;
 use crate::scene::material::GBufferNormals;
 use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
@@ -156,13 +156,23 @@ fn needs(f: &Frame) -> Needs {
     let target = f.targets.get(gbuffer::NAME);
     let thin = layout(f.scene) == Some(true);
     let packed = target.colors[0].internal_format == gbuffer::OCTAHEDRAL.1;
-    (thin, packed, MaterialVariant::of(f.scene), !f.scene.render.specialize)
+    (
+        thin,
+        packed,
+        MaterialVariant::of(f.scene),
+        !f.scene.render.specialize,
+    )
 }
 
 /// `frame`'s needs for an object whose material's alpha test is
 /// `alpha_test` (`DrawItem::alpha_test`).
 fn with_alpha_test((thin, packed, material, alpha): Needs, alpha_test: i32) -> Needs {
-    (thin, packed, material, alpha || alpha_test != AlphaTest::Always.code())
+    (
+        thin,
+        packed,
+        material,
+        alpha || alpha_test != AlphaTest::Always.code(),
+    )
 }
 
 fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {

@@ -266,12 +266,6 @@ impl Program {
         l
     }
 
-    /// Whether the linked program has the active uniform `name`
-    /// (glGetUniformLocation, cached as the setters cache it).
-    pub fn has_uniform(&self, name: &str) -> bool {
-        self.loc(name).is_some()
-    }
-
     /// Uniform setters on the program in use (glUniform*). A name the
     /// linker optimised away is silently skipped, as GL does with location -1.
     pub fn set_mat4(&self, name: &str, m: &glam::Mat4) {
@@ -343,6 +337,12 @@ impl Program {
                 self.gl.uniform_block_binding(self.id, idx, binding);
             }
         }
+    }
+
+    /// Whether the linked program has the active uniform `name`
+    /// (glGetUniformLocation, cached as the setters cache it).
+    pub fn has_uniform(&self, name: &str) -> bool {
+        self.loc(name).is_some()
     }
 }
 

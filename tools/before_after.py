@@ -38,7 +38,7 @@ import tomllib
 ALL_PATHS = "forward,deferred,volumes,prepass,tiled"
 # Scenes compared on every lighting path besides their own (and every scene
 # whose own path is a deferred one).
-ALL_PATH_SCENES = {"default", "logl-like", "many-lights"}
+ALL_PATH_SCENES = {"default", "logl-like", "many-lights", "model-loading"}
 FRAME = "(frame)"
 
 

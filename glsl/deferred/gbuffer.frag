@@ -35,7 +35,11 @@ layout(location = 4) out vec4 g_convert;
 
 void main() {
     vec2 uv = surface_uv();
+    // A material that tests nothing is drawn with NO_ALPHA_TEST
+    // (src/techniques/deferred/gbuffer.rs): no discard in the program.
+#ifndef NO_ALPHA_TEST
     alpha_test(material_alpha(uv));
+#endif
     // The normal after the normal map (notes 01 §8.4) is what the lights read.
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
 #ifdef OCTAHEDRAL_NORMALS

@@ -130,18 +130,35 @@ impl DrawList {
         p.set_vec3("u_emissive", d.pbr.emissive);
     }
 
-    /// Point a geometry program's glTF map samplers (`u_metal_rough_map`,
-    /// `u_occlusion_map`, `u_emissive_map`) at their own units, once when
-    /// it is built. `bind_pbr_maps` sets them only for a material with the
-    /// map; left at GL's default, unit 0, they read the diffuse texture,
-    /// and llvmpipe runs those reads (with the material's filter: 16x
-    /// anisotropic on texture-filtering) under a mask even where `u_pbr`
-    /// is false. On an empty unit a read costs next to nothing.
+    /// Point every sampler of glsl/common/material.glsl that program `p`
+    /// has at its own unit, once when it is built: the diffuse texture,
+    /// normal map and specular map, and glTF's maps (`u_metal_rough_map`,
+    /// `u_occlusion_map`, `u_emissive_map`). `Programs` calls it for every
+    /// program it builds (src/frame/technique.rs), so each pass that draws
+    /// materials (forward, the G-buffer, the light pre-pass's combine, the
+    /// transparent draws) gets it from one place. `bind_pbr_maps` sets the
+    /// glTF units only for a material with the map; left at GL's default,
+    /// unit 0, they would read the diffuse texture, and llvmpipe runs those
+    /// reads (with the material's filter: 16x anisotropic on
+    /// texture-filtering) under a mask even where `u_pbr` is false. On an
+    /// empty unit a read costs next to nothing. A program with none of
+    /// these samplers is left alone.
     pub fn setup_program(p: &Program) {
+        let units = [
+            ("u_diffuse_texture", unit::DIFFUSE_TEXTURE),
+            ("u_normal_map", unit::NORMAL_MAP),
+            ("u_specular_map", unit::SPECULAR_MAP),
+            ("u_metal_rough_map", unit::METAL_ROUGH_MAP),
+            ("u_occlusion_map", unit::OCCLUSION_MAP),
+            ("u_emissive_map", unit::EMISSIVE_MAP),
+        ];
+        if !units.iter().any(|(name, _)| p.has_uniform(name)) {
+            return;
+        }
         p.use_program();
-        p.set_i32("u_metal_rough_map", unit::METAL_ROUGH_MAP as i32);
-        p.set_i32("u_occlusion_map", unit::OCCLUSION_MAP as i32);
-        p.set_i32("u_emissive_map", unit::EMISSIVE_MAP as i32);
+        for (name, u) in units {
+            p.set_i32(name, u as i32);
+        }
         p.unuse();
     }
 

@@ -134,8 +134,15 @@ impl LaterPrograms {
             .map(|(k, v)| (k.as_str(), v.clone()))
             .chain(defines.iter().cloned())
             .collect();
-        Program::new(&self.gl, &self.sources, stages, &all)
+        Program::new(&self.gl, &self.sources, stages, &all).map(material_units)
     }
+}
+
+/// A program just built, with material.glsl's samplers on their units
+/// (`DrawList::setup_program`): every way `Programs` builds ends here.
+fn material_units(p: Program) -> Program {
+    DrawList::setup_program(&p);
+    p
 }
 
 impl Programs<'_> {
@@ -152,7 +159,7 @@ impl Programs<'_> {
 
     /// Compile and link `stages` = [(GL_VERTEX_SHADER, "deferred/gbuffer.vert"), ...].
     pub fn build(&self, stages: &[(u32, &str)]) -> Result<Program> {
-        Program::new(self.gl, self.sources, stages, self.defines)
+        Program::new(self.gl, self.sources, stages, self.defines).map(material_units)
     }
 
     /// `build`, with `#define`s of its own besides the shared ones.
@@ -164,7 +171,7 @@ impl Programs<'_> {
         let all: Vec<(&str, String)> = (self.defines.iter().cloned())
             .chain(defines.iter().cloned())
             .collect();
-        Program::new(self.gl, self.sources, stages, &all)
+        Program::new(self.gl, self.sources, stages, &all).map(material_units)
     }
 
     /// `build`, specialised to the frame's lighting variant: the parts of
@@ -197,7 +204,7 @@ impl Programs<'_> {
         let all: Vec<(&str, String)> = (self.defines.iter().cloned())
             .chain(defines.iter().cloned())
             .collect();
-        Program::with_feedback(self.gl, self.sources, stages, &all, varyings)
+        Program::with_feedback(self.gl, self.sources, stages, &all, varyings).map(material_units)
     }
 }
 

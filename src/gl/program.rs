@@ -338,6 +338,12 @@ impl Program {
             }
         }
     }
+
+    /// Whether the linked program has the active uniform `name`
+    /// (glGetUniformLocation, cached as the setters cache it).
+    pub fn has_uniform(&self, name: &str) -> bool {
+        self.loc(name).is_some()
+    }
 }
 
 impl Drop for Program {

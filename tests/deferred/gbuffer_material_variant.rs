@@ -9,7 +9,12 @@
 //!   and defines nothing (the general shader);
 //! * every specialised G-buffer and composite gives the general shader's
 //!   image exactly (0 differing bytes) on the deferred scenes, the light
-//!   pre-pass's thin G-buffer and the light volumes included.
+//!   pre-pass's thin G-buffer and the light volumes included;
+//! * so does the G-buffer's split by alpha test (an object whose material
+//!   tests nothing drawn with the program built with NO_ALPHA_TEST): the
+//!   general shader runs the alpha test for every object, and atrium's and
+//!   model-loading's alpha-tested leaves and banners are drawn between the
+//!   untested objects in both.
 
 use crate::common;
 use crate::with_path;
@@ -86,6 +91,8 @@ fn each_specialised_gbuffer_and_composite_gives_the_general_image() {
         ("ambient-occlusion.toml", RenderPath::Deferred),
         ("bump-mapping.toml", RenderPath::Deferred),
         ("deferred-shading.toml", RenderPath::Prepass),
+        ("atrium.toml", RenderPath::Prepass),
+        ("model-loading.toml", RenderPath::Tiled),
     ] {
         let mut special = with_path(&common::scene(name), path);
         // Emission goes in the specular attachment, which deferred-shading's

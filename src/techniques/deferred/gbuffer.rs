@@ -10,6 +10,15 @@
 //! 12 + 12 bits and, per object, the index of its shininess in the scene's
 //! table (`u_shininess_code`), instead of xyz and shininess in half floats.
 //!
+//! The alpha test (notes 05, "Alpha Test": an OBJ's cut-out leaves) has a
+//! `discard`, which a software rasteriser pays for even where `u_alpha_test`
+//! says "always" (the test runs, and a shader that may discard gets no early
+//! depth test). So with `render.specialize` an object whose material tests
+//! nothing is drawn with a program built with `NO_ALPHA_TEST`, an
+//! alpha-tested one with the program that tests, switched between in the
+//! objects' own order (the same images). `render.specialize = false`: every
+//! object with the program that tests.
+//!
 //! GL state: sets glDepthFunc(render.depth_func, or the material's
 //! depth_func per object where it differs), depth writes, back-face
 //! culling, glFrontFace per object, GL_FRAMEBUFFER_SRGB (albedo and specular
@@ -27,6 +36,7 @@ use crate::frame::technique::LaterPrograms;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
+use crate::scene::AlphaTest;
 use crate::scene::knobs;
 use crate::scene::material::GBufferNormals;
 use crate::scene::texturing::Interpolation;
@@ -34,6 +44,7 @@ use crate::scene::{RenderPath, Scene};
 use anyhow::Result;
 use glow::HasContext;
 use std::cell::OnceCell;
+use std::collections::BTreeSet;
 
 pub const GBUFFER: Technique = Technique {
     name: "gbuffer",
@@ -101,7 +112,20 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     // `needs` reads it) and the materials' variant.
     let thin = layout(scene) == Some(true);
     let material = MaterialVariant::of(scene);
-    let defines = defines(thin, gbuffer::octahedral(scene), material);
+    let packed = gbuffer::octahedral(scene);
+    // One program for the objects that test no alpha, one for those that do
+    // (`with_alpha_test`), in that order.
+    let alpha: BTreeSet<bool> = (scene.objects.iter())
+        .map(|o| &scene.materials[o.material])
+        .filter(|m| !m.is_transparent())
+        .map(|m| !scene.render.specialize || m.alpha_test != AlphaTest::Always)
+        .collect();
+    let programs = (alpha.into_iter())
+        .map(|a| {
+            let role = if a { "G-buffer, alpha test" } else { "G-buffer" };
+            PlanProgram::new(role, defines(thin, packed, material, a))
+        })
+        .collect();
     vec![
         Pass::new(
             "gbuffer",
@@ -109,7 +133,7 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
             format!("{n} objects ({what}{specular}{normal}; {bytes} bytes/px)"),
             file!(),
         )
-        .with_programs(vec![PlanProgram::new("G-buffer", defines)]),
+        .with_programs(programs),
     ]
 }
 
@@ -135,27 +159,52 @@ struct GBufferPass {
     /// needs it: full or thin (the light pre-pass's: the material triple at
     /// locations 1 and 2), the normal as xyz or packed (OCTAHEDRAL_NORMALS),
     /// and the material code the scene's materials need
-    /// (`gbuffer::MaterialVariant`: 8 of them).
-    programs: [OnceCell<Program>; 32],
+    /// (`gbuffer::MaterialVariant`: 8 of them), with or without the alpha
+    /// test.
+    programs: [OnceCell<Program>; 64],
 }
 
-/// Which program: thin, packed normal, the material variant.
-fn program_index(thin: bool, packed: bool, material: MaterialVariant) -> usize {
-    usize::from(thin) * 16 + usize::from(packed) * 8 + material.index()
+/// What a program is built for: thin, packed normal, the material variant,
+/// and whether it runs the alpha test.
+type Needs = (bool, bool, MaterialVariant, bool);
+
+/// Which program: thin, packed normal, the material variant, the alpha test.
+fn program_index((thin, packed, material, alpha): Needs) -> usize {
+    usize::from(alpha) * 32 + usize::from(thin) * 16 + usize::from(packed) * 8 + material.index()
 }
 
-/// What `f` needs: (thin, packed normal, material variant).
-fn needs(f: &Frame) -> (bool, bool, MaterialVariant) {
+/// What `f` needs for an object that tests no alpha: (thin, packed normal,
+/// material variant, the alpha test only if `render.specialize` is off).
+fn needs(f: &Frame) -> Needs {
     let target = f.targets.get(gbuffer::NAME);
     let thin = layout(f.scene) == Some(true);
     let packed = target.colors[0].internal_format == gbuffer::OCTAHEDRAL.1;
-    (thin, packed, MaterialVariant::of(f.scene))
+    (
+        thin,
+        packed,
+        MaterialVariant::of(f.scene),
+        !f.scene.render.specialize,
+    )
+}
+
+/// `frame`'s needs for an object whose material's alpha test is
+/// `alpha_test` (`DrawItem::alpha_test`).
+fn with_alpha_test((thin, packed, material, alpha): Needs, alpha_test: i32) -> Needs {
+    (
+        thin,
+        packed,
+        material,
+        alpha || alpha_test != AlphaTest::Always.code(),
+    )
 }
 
 /// The `#define`s of the program for (thin, packed normal, material
-/// variant): what the pass builds, and what the plan names.
-fn defines(thin: bool, packed: bool, material: MaterialVariant) -> Vec<(&'static str, String)> {
+/// variant, alpha test): what the pass builds, and what the plan names.
+fn defines(thin: bool, packed: bool, material: MaterialVariant, alpha: bool) -> Vec<(&'static str, String)> {
     let mut defines = material.defines();
+    if !alpha {
+        defines.push(("NO_ALPHA_TEST", "1".into()));
+    }
     if thin {
         defines.push(("THIN_GBUFFER", "1".into()));
     }
@@ -174,33 +223,64 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
 
 impl GBufferPass {
     /// The program for `needs`, built now if no frame has needed it yet.
-    fn program(&self, (thin, packed, material): (bool, bool, MaterialVariant)) -> Result<&Program> {
-        let i = program_index(thin, packed, material);
+    fn program(&self, needs: Needs) -> Result<&Program> {
+        let i = program_index(needs);
         if let Some(p) = self.programs[i].get() {
             return Ok(p);
         }
-        let program = self
-            .build
-            .build_with(&STAGES, &defines(thin, packed, material))?;
+        let (thin, packed, material, alpha) = needs;
+        let program = (self.build)
+            .build_with(&STAGES, &defines(thin, packed, material, alpha))?;
         Ok(self.programs[i].get_or_init(|| program))
+    }
+
+    /// Put the program for `needs` in use with the pass's uniforms; None
+    /// (and a warning) if it could not be built. Built by `prepare`, which
+    /// the renderer calls first.
+    fn use_program(&self, f: &Frame, needs: Needs) -> Option<&Program> {
+        let p = match self.program(needs) {
+            Ok(p) => p,
+            Err(e) => {
+                eprintln!("warning: the G-buffer pass did not draw: {e:#}");
+                return None;
+            }
+        };
+        let (target, u) = (f.targets.get(gbuffer::NAME), f.uniforms);
+        p.use_program();
+        p.set_mat4("u_view_projection", &u.view_projection);
+        // How gAlpha and gConvert hold the microfacet triple (notes 03).
+        p.set_i32("u_gbuffer_material", gbuffer::material_layout(target).1);
+        p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+        p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
+        p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
+        // Texture coordinates and vertex colours perspective-correct or
+        // affine (notes 01 §4.1, §5.1).
+        let affine = f.scene.render.interpolation == Interpolation::Affine;
+        p.set_bool("u_affine", affine);
+        f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
+        Some(p)
     }
 }
 
 impl RunPasses for GBufferPass {
+    /// The programs the objects' alpha tests need (a transparent object's
+    /// too: one more program at most).
     fn prepare(&self, _: &Pass, f: &Frame) -> Result<()> {
-        self.program(needs(f)).map(|_| ())
+        let tests: BTreeSet<i32> =
+            f.draws.items.iter().map(|d| d.alpha_test).collect();
+        let frame = needs(f);
+        for t in tests {
+            self.program(with_alpha_test(frame, t))?;
+        }
+        Ok(())
     }
 
     fn run(&self, _: &Pass, f: &Frame) {
         let target = f.targets.get(gbuffer::NAME);
-        let (_, packed, _) = needs(f);
-        // Built by `prepare`, which the renderer calls first.
-        let p = match self.program(needs(f)) {
-            Ok(p) => p,
-            Err(e) => return eprintln!("warning: the G-buffer pass did not run: {e:#}"),
-        };
+        let frame = needs(f);
+        let (_, packed, _, _) = frame;
         let table = gbuffer::shininess_table(f.scene);
-        let (gl, u) = (f.gl, f.uniforms);
+        let gl = f.gl;
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.id));
             let (x, y, w, h) = f.view.rect(target.width, target.height);
@@ -234,24 +314,22 @@ impl RunPasses for GBufferPass {
                 gl.enable(glow::CLIP_DISTANCE1 + i);
             }
 
-            p.use_program();
-            p.set_mat4("u_view_projection", &u.view_projection);
-            // How gAlpha and gConvert hold the microfacet triple (notes 03).
-            p.set_i32("u_gbuffer_material", gbuffer::material_layout(target).1);
-            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
-            // Texture coordinates and vertex colours perspective-correct or
-            // affine (notes 01 §4.1, §5.1).
-            let affine = f.scene.render.interpolation == Interpolation::Affine;
-            p.set_bool("u_affine", affine);
-            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
+            // The program in use, and what it was built for.
+            let mut current: Option<(Needs, Option<&Program>)> = None;
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             let mut depth_func = f.scene.render.depth_func;
             // Transparent objects are drawn later, sorted (blending/transparency.rs);
             // mirrors by the mirror technique (stencil/mirror.rs).
             for i in f.opaque_order() {
                 let d = &f.draws.items[i];
+                // The program its alpha test needs, put in use when it changes.
+                let want = with_alpha_test(frame, d.alpha_test);
+                if current.map(|c| c.0) != Some(want) {
+                    current = Some((want, self.use_program(f, want)));
+                }
+                let Some((_, Some(p))) = current else {
+                    continue;
+                };
                 // The material's face culling (notes 01 §3.4): back faces
                 // (the default), front faces, both, or none.
                 match d.cull.gl() {

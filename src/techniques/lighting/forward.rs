@@ -137,8 +137,6 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     for program in [&phong, &gouraud, &flat] {
         program.bind_uniform_block("Lights", LIGHTS_BINDING);
         shadows::setup_program(program);
-        // The glTF maps' samplers on their own units, not the diffuse texture's.
-        DrawList::setup_program(program);
     }
     Ok(Box::new(Forward {
         phong,

@@ -84,6 +84,16 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             }
             r.near_radius
         },
+        far_radius: {
+            let a = r.far_radius;
+            if !(a.is_finite() && (a == 0.0 || (1.0..=64.0).contains(&a))) {
+                bail!(
+                    "render.far_radius: expected 0 (off) or the far lists' inner radius in cutoff radii, 1 to 64, found {}",
+                    a
+                );
+            }
+            a
+        },
         depth_slices: {
             if !(DEPTH_SLICES).contains(&r.depth_slices) {
                 bail!(
@@ -269,6 +279,11 @@ pub struct RenderSettings {
     /// With the far field: where each light's near part ends, as a fraction
     /// of its cutoff radius (1: at the radius); tiled shading bins at it.
     pub near_radius: f32,
+    /// With the far field: 0, a pixel that no sample stands for sums every
+    /// light's far part; a >= 1, it sums only its cluster's far list (the
+    /// lights within 2 a cutoff radii) and takes the rest from a sample's
+    /// harmonics (src/techniques/deferred/far_lists.rs).
+    pub far_radius: f32,
     /// Planar mirrors (notes 05): the order of their passes, how deep
     /// reflections recurse, the clip plane and the winding fix (toggles that
     /// show what goes wrong without them).

@@ -138,6 +138,7 @@ impl Scene {
                 r.near_radius != 1.0,
                 r.near_radius.to_string(),
             ),
+            ("far_radius", r.far_radius != 0.0, r.far_radius.to_string()),
         ] {
             warn(
                 key,

@@ -76,13 +76,17 @@ vec3 coarse_irradiance(vec3 c[4], vec3 n) {
     return 0.282095 * c[0] + 0.488603 * (n.y * c[1] + n.z * c[2] + n.x * c[3]);
 }
 
-// The coarse part at surface s seen along V: its diffuse light as order-1
+// far_light's sums (far_diffuse, far_specular) and, in the same loop, the
+// coarse part at surface s seen along V: its diffuse light as order-1
 // spherical harmonics of the incoming light, convolved with the clamped
 // cosine (A_0 = pi, A_1 = 2 pi / 3) and band 0 moved so that s's own
 // normal gets its exact diffuse light; its specular light; `total` the sum
 // of its radiances' brightest channels (the bound's C).
-void far_coarse(Surface s, vec3 V, out vec3 c[4], out vec3 specular, out float total) {
+void far_coarse(Surface s, vec3 V, out vec3 far_diffuse, out vec3 far_specular,
+                out vec3 c[4], out vec3 specular, out float total) {
     for (int j = 0; j < 4; ++j) c[j] = vec3(0.0);
+    far_diffuse = vec3(0.0);
+    far_specular = vec3(0.0);
     specular = vec3(0.0);
     vec3 diffuse = vec3(0.0);
     total = 0.0;
@@ -90,7 +94,14 @@ void far_coarse(Surface s, vec3 V, out vec3 c[4], out vec3 specular, out float t
         Light light = light_at(i);
         float radius = light.direction_radius.w;
         if (radius < 0.0 || casts_shadow(i)) continue;
-        float v = coarse_weight(distance(s.P, light.position_type.xyz), radius);
+        float dist = distance(s.P, light.position_type.xyz);
+        float far = 1.0 - near_weight(dist, radius);
+        if (far <= 0.0) continue;
+        vec3 d, sp;
+        surface_light(light, s.P, s.N, V, s.r, d, sp);
+        far_diffuse += far * d;
+        far_specular += far * sp;
+        float v = coarse_weight(dist, radius);
         if (v <= 0.0) continue;   // (v > 0 only beyond a r >= r: all far there)
         vec3 L;
         float sin_sigma;
@@ -100,8 +111,6 @@ void far_coarse(Surface s, vec3 V, out vec3 c[4], out vec3 specular, out float t
         c[1] += 0.488603 * L.y * (2.0 * PI / 3.0) * rad;
         c[2] += 0.488603 * L.z * (2.0 * PI / 3.0) * rad;
         c[3] += 0.488603 * L.x * (2.0 * PI / 3.0) * rad;
-        vec3 d, sp;
-        surface_light(light, s.P, s.N, V, s.r, d, sp);
         diffuse += v * d;
         specular += v * sp;
     }
@@ -188,21 +197,26 @@ void far_list_light(Surface s, vec3 V, out vec3 diffuse, out vec3 specular) {
     }
 }
 
+// How far off a sample's coarse part may be, estimated, for a pixel to
+// take it (linear light, before the material).
+const float COARSE_TOLERANCE = 0.5 / 255.0;
+
 // The sample whose coarse part a pixel no sample stands for takes: of its
-// four within u_coarse_reach, the one with the smallest bound's factor,
-// half the turn of the normal plus the move over the shortest coarse
-// distance 2 u_coarse_reach (far_coarse_bound's terms, per C); false when
-// none is within reach.
+// four within u_coarse_reach, the one with the smallest estimate of the
+// bound (far_coarse_bound): C times half the turn of the normal plus the
+// move over the shortest coarse distance, 2 u_coarse_reach (G ~ 6 C /
+// d_min); false when none is within reach and COARSE_TOLERANCE.
 bool far_coarse_texel(Surface s, ivec2 t0, out ivec2 best, out Surface bo) {
     ivec2 grid = (ivec2(u_viewport.zw) + u_far_scale - 1) / u_far_scale;
-    float lowest = 1e30;
+    float lowest = COARSE_TOLERANCE;
     bool found = false;
     for (int k = 0; k < 4; ++k) {
         ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), grid - 1);
         Surface o = read_geometry_texel(far_sample_texel(t));
         float d = distance(o.P, s.P);
-        float score = 0.5 * length(s.N - o.N) + 3.0 * d / u_coarse_reach;
-        if (o.depth < 1.0 && d <= u_coarse_reach && score < lowest) {
+        float total = texelFetch(u_far_sh4, far_texel(t), 0).a;
+        float score = total * (0.5 * length(s.N - o.N) + 3.0 * d / u_coarse_reach);
+        if (o.depth < 1.0 && d <= u_coarse_reach && score <= lowest) {
             lowest = score;
             best = t;
             bo = o;

@@ -64,6 +64,7 @@ pub const FAR_FIELD: Technique = Technique {
         &knobs::FAR_FIELD,
         &knobs::FAR_FIELD_SH,
         &knobs::NEAR_RADIUS,
+        &knobs::FAR_RADIUS,
         &knobs::CUTOFF,
     ],
     passes,

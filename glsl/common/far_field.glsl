@@ -198,17 +198,18 @@ void far_list_light(Surface s, vec3 V, out vec3 diffuse, out vec3 specular) {
 }
 
 // How far off a sample's coarse part may be, estimated, for a pixel to
-// take it (linear light, before the material).
-const float COARSE_TOLERANCE = 0.5 / 255.0;
+// take it (linear light, before the material): 0.5/255
+// (RenderSettings::far_coarse_tolerance).
+uniform float u_coarse_tolerance;
 
 // The sample whose coarse part a pixel no sample stands for takes: of its
 // four within u_coarse_reach, the one with the smallest estimate of the
 // bound (far_coarse_bound): C times half the turn of the normal plus the
 // move over the shortest coarse distance, 2 u_coarse_reach (G ~ 6 C /
-// d_min); false when none is within reach and COARSE_TOLERANCE.
+// d_min); false when none is within reach and u_coarse_tolerance.
 bool far_coarse_texel(Surface s, ivec2 t0, out ivec2 best, out Surface bo) {
     ivec2 grid = (ivec2(u_viewport.zw) + u_far_scale - 1) / u_far_scale;
-    float lowest = COARSE_TOLERANCE;
+    float lowest = u_coarse_tolerance;
     bool found = false;
     for (int k = 0; k < 4; ++k) {
         ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), grid - 1);

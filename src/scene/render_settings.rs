@@ -74,6 +74,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             r.far_field
         },
         far_field_bound: false,
+        far_coarse_tolerance: 0.5 / 255.0,
         far_field_sh: r.far_field_sh,
         near_radius: {
             if !(r.near_radius.is_finite() && r.near_radius > 0.0 && r.near_radius <= 1.0) {
@@ -284,6 +285,10 @@ pub struct RenderSettings {
     /// lights within 2 a cutoff radii) and takes the rest from a sample's
     /// harmonics (src/techniques/deferred/far_lists.rs).
     pub far_radius: f32,
+    /// Not in the scene file: with far lists, how far off (estimated, linear
+    /// light) a sample's coarse part may be for a pixel to take it; tests set
+    /// it to infinity to check the bound where every pixel takes one.
+    pub far_coarse_tolerance: f32,
     /// Planar mirrors (notes 05): the order of their passes, how deep
     /// reflections recurse, the clip plane and the winding fix (toggles that
     /// show what goes wrong without them).

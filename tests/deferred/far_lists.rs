@@ -112,11 +112,14 @@ fn far_lists_hold_every_light_within_their_radius_and_not_all() {
 
 /// The image within each pixel's printed bound of the exact far part
 /// (k = 1), plus 1/255 for the two images' 8-bit rounding.
-fn within_bound(label: &str, scene: &Scene, a: f32) -> f64 {
+/// `tolerance`: RenderSettings::far_coarse_tolerance (infinite: every
+/// pixel no sample stands for takes a coarse part within reach).
+fn within_bound(label: &str, scene: &Scene, a: f32, tolerance: f32) -> f64 {
     let ctx = common::context(common::backend());
     let (w, _) = scene.render.size;
     let exact = common::render_with(&ctx, &far(scene, 1, 0.0), Output::Srgb8).image;
-    let s = far(scene, 4, a);
+    let mut s = far(scene, 4, a);
+    s.render.far_coarse_tolerance = tolerance;
     let image = common::render_with(&ctx, &s, Output::Srgb8).image;
     let bound = gloss::bench::bound::far_field_pixels(&ctx, &s, &image)
         .unwrap()
@@ -137,7 +140,10 @@ fn within_bound(label: &str, scene: &Scene, a: f32) -> f64 {
         outside.len(),
         &outside[..outside.len().min(10)]
     );
-    eprintln!("{label}, a = {a}: every pixel within its bound; largest error {:.1}/255", worst * 255.0);
+    eprintln!(
+        "{label}, a = {a}, tolerance {tolerance}: every pixel within its bound; largest error {:.1}/255",
+        worst * 255.0
+    );
     worst
 }
 
@@ -150,7 +156,14 @@ fn far_lists_stay_within_their_bound_on_curved_surfaces_and_edges() {
         let mut base = common::scene(name);
         base.render.size = size;
         for a in [1.0, 2.0] {
-            within_bound(name, &base, a);
+            within_bound(name, &base, a, 0.5 / 255.0);
+            // Every such pixel on the coarse part: large errors, still bounded.
+            let worst = within_bound(name, &base, a, f32::INFINITY);
+            if name == "many-lights.toml" {
+                // The coarse part is taken (the knot's pixels are off by
+                // more than the acceptance allows): the check checks it.
+                assert!(worst > 2.0 / 255.0, "{name}, a = {a}: {worst}");
+            }
         }
     }
 }
@@ -200,7 +213,7 @@ fn far_lists_hard_cases() {
                 point(Vec3::new(d * t.cos(), 0.8, d * t.sin()))
             })
             .collect();
-        within_bound(label, &s, a);
+        within_bound(label, &s, a, f32::INFINITY);
         let fwd = common::render(&with_path(&s, RenderPath::Forward), Output::Srgb8);
         let t = common::render(&far(&s, 4, a), Output::Srgb8);
         let m = common::assert_close(

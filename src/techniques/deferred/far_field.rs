@@ -267,9 +267,14 @@ fn set_uniforms(f: &Frame, p: &Program) {
     p.set_f32("u_far_reach", reach(f.scene, f.lights));
     p.set_f32("u_near_scale", f.scene.render.near_radius);
     let lists = super::far_lists::on(f.scene, f.lights);
-    let a = if lists { f.scene.render.far_radius } else { 0.0 };
+    let a = if lists {
+        f.scene.render.far_radius
+    } else {
+        0.0
+    };
     p.set_f32("u_far_radius", a);
     p.set_f32("u_coarse_reach", coarse_reach(f.lights, a));
+    p.set_f32("u_coarse_tolerance", f.scene.render.far_coarse_tolerance);
 }
 
 /// How far a sample's surface point may be from a pixel that takes its

@@ -301,7 +301,9 @@ impl RunPasses for TiledShading {
             if far {
                 far_field::bind_for_reading(f, p);
                 // 0: no far lists; else the far table's first texel.
-                let table = far_bins.as_ref().map_or(0, |_| 2 * bins.clusters.len() as i32);
+                let table = far_bins
+                    .as_ref()
+                    .map_or(0, |_| 2 * bins.clusters.len() as i32);
                 p.set_i32("u_far_table", table);
                 p.set_i32("u_far_index_base", far_index_base);
             }

@@ -85,16 +85,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             }
             r.near_radius
         },
-        far_radius: {
-            let a = r.far_radius;
-            if !(a.is_finite() && (a == 0.0 || (1.0..=64.0).contains(&a))) {
-                bail!(
-                    "render.far_radius: expected 0 (off) or the far lists' inner radius in cutoff radii, 1 to 64, found {}",
-                    a
-                );
-            }
-            a
-        },
+        far_radius: super::checks::far_radius(r.far_radius)?,
         depth_slices: {
             if !(DEPTH_SLICES).contains(&r.depth_slices) {
                 bail!(
@@ -280,14 +271,10 @@ pub struct RenderSettings {
     /// With the far field: where each light's near part ends, as a fraction
     /// of its cutoff radius (1: at the radius); tiled shading bins at it.
     pub near_radius: f32,
-    /// With the far field: 0, a pixel that no sample stands for sums every
-    /// light's far part; a >= 1, it sums only its cluster's far list (the
-    /// lights within 2 a cutoff radii) and takes the rest from a sample's
-    /// harmonics (src/techniques/deferred/far_lists.rs).
+    /// With the far field: 0, or the far lists' radius a (0 or 1..=64;
+    /// src/techniques/deferred/far_lists.rs).
     pub far_radius: f32,
-    /// Not in the scene file: with far lists, how far off (estimated, linear
-    /// light) a sample's coarse part may be for a pixel to take it; tests set
-    /// it to infinity to check the bound where every pixel takes one.
+    /// Not in the scene file: how far off a coarse part a far-list pixel takes.
     pub far_coarse_tolerance: f32,
     /// Planar mirrors (notes 05): the order of their passes, how deep
     /// reflections recurse, the clip plane and the winding fix (toggles that

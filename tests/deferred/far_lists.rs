@@ -16,7 +16,7 @@ use gloss::frame::lights::FrameLights;
 use gloss::image_compare::Tolerance;
 use gloss::renderer::Output;
 use gloss::scene::{Accumulation, Light, LightKind, RenderPath, Scene};
-use gloss::techniques::deferred::far_lists;
+use gloss::techniques::deferred::{far_lists, tiled_shading};
 
 fn far(scene: &Scene, k: u32, a: f32) -> Scene {
     let mut s = with_path(scene, RenderPath::Tiled);
@@ -33,7 +33,7 @@ fn lists(scene: &Scene) -> (Grid, gloss::frame::clusters::Bins) {
     let c = &scene.camera;
     let grid = Grid::new(w, h, 16, 16, c.near, c.far);
     let lights = FrameLights::new(scene);
-    let bounds = far_lists::far_bounds(scene, &lights, &[]);
+    let bounds = far_lists::far_bounds(scene, &lights, &[], tiled_shading::bounding_sphere);
     let projection = c.projection(w as f32 / h as f32);
     let bins = far_lists::bin(&grid, c.view(), projection, (w, h), &bounds);
     (grid, bins)
@@ -223,5 +223,49 @@ fn far_lists_hard_cases() {
             &fwd_tol,
         );
         eprintln!("{label}: far lists vs forward: {m}");
+    }
+}
+
+/// `render.far_radius` out of range is refused with the key and the range;
+/// set where it does nothing, it is named in a warning.
+#[test]
+fn far_radius_is_checked_and_warned_about() {
+    let dir = std::env::temp_dir();
+    let text = |path: &str, extra: &str| {
+        format!(
+            "[camera]\neye = [0.0, 2.0, 10.0]\ntarget = [0.0, 0.0, 0.0]\n[render]\npath = \"{path}\"\nfar_field = 4\n{extra}\n"
+        )
+    };
+    for bad in ["0.5", "-1.0", "65.0"] {
+        let t = text("tiled", &format!("far_radius = {bad}"));
+        let e = Scene::parse(&t, &dir.join("scene.toml")).unwrap_err();
+        let e = format!("{e:#}");
+        assert!(
+            e.contains("render.far_radius") && e.contains("1 to 64"),
+            "{bad}: {e}"
+        );
+    }
+    let ok = Scene::parse(&text("tiled", "far_radius = 2.0"), &dir.join("scene.toml")).unwrap();
+    assert_eq!(ok.render.far_radius, 2.0);
+    assert!(
+        ok.warnings().iter().all(|w| !w.contains("far_radius")),
+        "{:?}",
+        ok.warnings()
+    );
+    for (path, extra, why) in [
+        ("forward", "far_radius = 2.0", "only the tiled path"),
+        (
+            "tiled",
+            "far_radius = 2.0\nfar_field_sh = true",
+            "fallback of its own",
+        ),
+    ] {
+        let s = Scene::parse(&text(path, extra), &dir.join("scene.toml")).unwrap();
+        let w = s.warnings();
+        assert!(
+            w.iter()
+                .any(|w| w.starts_with("render.far_radius = 2") && w.contains(why)),
+            "{path} {extra}: {w:?}"
+        );
     }
 }

@@ -90,6 +90,13 @@ pub fn runs(scene: &Scene, lights: &FrameLights) -> bool {
         && lights.lights.iter().any(|l| l.radius.is_some())
 }
 
+/// Whether the far lists run (far_lists.rs): the far field runs,
+/// `render.far_radius` is set, and the diffuse far light is not stored as
+/// order-2 harmonics (which has a fallback of its own).
+pub fn lists_on(scene: &Scene, lights: &FrameLights) -> bool {
+    runs(scene, lights) && scene.render.far_radius > 0.0 && !scene.render.far_field_sh
+}
+
 /// How far a sample's surface point may be from the pixel it stands for:
 /// half the smallest near part's inner radius (`NEAR_INNER x near_radius x
 /// r`), the shortest distance over which a far part changes much. 0 (every
@@ -266,7 +273,7 @@ fn set_uniforms(f: &Frame, p: &Program) {
     p.set_i32("u_light_count", f.lights.len() as i32);
     p.set_f32("u_far_reach", reach(f.scene, f.lights));
     p.set_f32("u_near_scale", f.scene.render.near_radius);
-    let lists = super::far_lists::on(f.scene, f.lights);
+    let lists = lists_on(f.scene, f.lights);
     let a = if lists {
         f.scene.render.far_radius
     } else {

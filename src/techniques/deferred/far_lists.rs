@@ -26,23 +26,20 @@
 
 use crate::frame::clusters::{self, Bins, Bound, Grid};
 use crate::frame::lights::FrameLights;
-use crate::scene::Scene;
-use glam::Mat4;
-
-use super::far_field;
-use super::tiled_shading::bounding_sphere;
-
-/// Whether the far lists run: the far field runs, `render.far_radius` is
-/// set, and the diffuse far light is not stored as order-2 harmonics (which
-/// has a fallback of its own).
-pub fn on(scene: &Scene, lights: &FrameLights) -> bool {
-    far_field::runs(scene, lights) && scene.render.far_radius > 0.0 && !scene.render.far_field_sh
-}
+use crate::scene::{Light, Scene};
+use glam::{Mat4, Vec3};
 
 /// Each light's bound for its far list: the sphere of radius `2 a r`
-/// (`a`: `render.far_radius`); nowhere for the lights with no far part
-/// (no radius, or a shadow map this frame).
-pub fn far_bounds(scene: &Scene, lights: &FrameLights, casting: &[usize]) -> Vec<Bound> {
+/// (`a`: `render.far_radius`) around it, as `sphere` gives it (tiled
+/// shading's `bounding_sphere`, which bounds a spot light's cone); nowhere
+/// for the lights with no far part (no radius, or a shadow map this frame).
+/// Whether the lists run at all is `far_field::lists_on`.
+pub fn far_bounds(
+    scene: &Scene,
+    lights: &FrameLights,
+    casting: &[usize],
+    bounding_sphere: fn(&Light, f32) -> (Vec3, f32),
+) -> Vec<Bound> {
     let a = scene.render.far_radius;
     (scene.lights.iter().zip(&lights.lights).enumerate())
         .map(|(i, (l, f))| match (casting.contains(&i), f.radius) {

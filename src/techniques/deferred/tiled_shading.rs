@@ -252,8 +252,9 @@ impl RunPasses for TiledShading {
         // 2. Upload the lists (the lights are the frame's buffer texture,
         // written when the scene's lights change: FrameUniforms::lights_texture).
         // With far lists (far_lists.rs), each cluster's far list after them.
-        let far_bins = far_lists::on(f.scene, f.lights).then(|| {
-            let bounds = far_lists::far_bounds(f.scene, f.lights, &f.shadows.casting_lights());
+        let far_bins = far_field::lists_on(f.scene, f.lights).then(|| {
+            let casting = f.shadows.casting_lights();
+            let bounds = far_lists::far_bounds(f.scene, f.lights, &casting, bounding_sphere);
             let view = u.view * f.view.reflection;
             far_lists::bin(&grid, view, u.projection, (w as u32, h as u32), &bounds)
         });

@@ -10,7 +10,7 @@ use super::{RenderPath, Scene};
 /// does nothing.
 pub(super) fn warning(s: &Scene) -> Option<String> {
     let r = &s.render;
-    let why = if r.far_radius == 0.0 || !s.keys_written.contains("render.far_radius") {
+    let why = if r.far_radius == 0 || !s.keys_written.contains("render.far_radius") {
         return None;
     } else if r.path != RenderPath::Tiled {
         "only the tiled path has a far field"

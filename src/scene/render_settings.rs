@@ -273,7 +273,7 @@ pub struct RenderSettings {
     pub near_radius: f32,
     /// With the far field: 0, or the far lists' radius a (0 or 1..=64;
     /// src/techniques/deferred/far_lists.rs).
-    pub far_radius: f32,
+    pub far_radius: u32,
     /// Not in the scene file: how far off a coarse part a far-list pixel takes.
     pub far_coarse_tolerance: f32,
     /// Planar mirrors (notes 05): the order of their passes, how deep

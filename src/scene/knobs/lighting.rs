@@ -145,15 +145,11 @@ pub static FAR_RADIUS: Knob = Knob {
     key: "render.far_radius",
     label: "far lists' radius",
     help: "tiled shading with a far field: 0, a pixel no sample stands for sums every light's far part; a >= 1, only the lights within 2 a cutoff radii of its cluster, the rest from a sample's harmonics",
-    kind: Kind::Number {
-        min: 0.0,
-        max: 8.0,
-        log: false,
-    },
-    get: |r| Value::Number(r.far_radius),
+    kind: Kind::Count { min: 0, max: 8 },
+    get: |r| Value::Count(r.far_radius),
     set: |r, v| {
-        if let Value::Number(x) = v {
-            r.far_radius = x;
+        if let Value::Count(n) = v {
+            r.far_radius = n;
         }
     },
 };

@@ -94,7 +94,7 @@ pub fn runs(scene: &Scene, lights: &FrameLights) -> bool {
 /// `render.far_radius` is set, and the diffuse far light is not stored as
 /// order-2 harmonics (which has a fallback of its own).
 pub fn lists_on(scene: &Scene, lights: &FrameLights) -> bool {
-    runs(scene, lights) && scene.render.far_radius > 0.0 && !scene.render.far_field_sh
+    runs(scene, lights) && scene.render.far_radius > 0 && !scene.render.far_field_sh
 }
 
 /// How far a sample's surface point may be from the pixel it stands for:
@@ -128,7 +128,7 @@ fn attachments(scene: &Scene) -> Vec<(&'static str, u32)> {
             "harmonics 20-23",
             "harmonics 24-26",
         ]
-    } else if scene.render.far_radius > 0.0 {
+    } else if scene.render.far_radius > 0 {
         // Far lists (far_lists.rs): the coarse part's order-1 harmonics
         // (12 floats), then its specular light and C.
         &[
@@ -163,7 +163,7 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     } else {
         "diffuse at the sample's normal"
     });
-    if scene.render.far_radius > 0.0 && !scene.render.far_field_sh {
+    if scene.render.far_radius > 0 && !scene.render.far_field_sh {
         draws.push_str(&format!(
             "; the coarse part (beyond {} x the cutoff radius) as order-1 harmonics",
             scene.render.far_radius
@@ -275,7 +275,7 @@ fn set_uniforms(f: &Frame, p: &Program) {
     p.set_f32("u_near_scale", f.scene.render.near_radius);
     let lists = lists_on(f.scene, f.lights);
     let a = if lists {
-        f.scene.render.far_radius
+        f.scene.render.far_radius as f32
     } else {
         0.0
     };

@@ -40,7 +40,7 @@ pub fn far_bounds(
     casting: &[usize],
     bounding_sphere: fn(&Light, f32) -> (Vec3, f32),
 ) -> Vec<Bound> {
-    let a = scene.render.far_radius;
+    let a = scene.render.far_radius as f32;
     (scene.lights.iter().zip(&lights.lights).enumerate())
         .map(|(i, (l, f))| match (casting.contains(&i), f.radius) {
             (false, Some(r)) => {

@@ -19,13 +19,20 @@ uniform vec3 u_eye;
 // render.near_radius: the near part ends at this fraction of the radius
 // (and is whole up to half of that); tiled shading bins at it.
 uniform float u_near_scale;
-#ifdef FAR_FIELD_SH
 // common/far_field_sh.glsl: the harmonics' floats 4 to 27 (0 to 3 are in
-// u_far_diffuse; u_far_specular keeps the specular light).
+// u_far_diffuse; u_far_specular keeps the specular light). With far lists
+// (u_far_radius > 0) the first four hold the samples' coarse part instead.
 uniform sampler2D u_far_sh1;
 uniform sampler2D u_far_sh2;
 uniform sampler2D u_far_sh3;
 uniform sampler2D u_far_sh4;
+// render.far_radius = a (src/techniques/deferred/far_lists.rs): 0, no far
+// lists; else each light's far part beyond a r (rising to all of it at
+// 2 a r) is the coarse part, which a pixel no sample stands for takes from
+// a sample's order-1 harmonics; the rest it sums from its cluster's far list.
+uniform float u_far_radius;
+uniform float u_coarse_reach;      // how far a coarse sample may be from the pixel: a r_min / 2
+#ifdef FAR_FIELD_SH
 uniform sampler2D u_far_sh5;
 uniform sampler2D u_far_sh6;
 #endif
@@ -53,6 +60,61 @@ void far_light(Surface s, vec3 V, out vec3 diffuse, out vec3 specular) {
         diffuse += far * d;
         specular += far * sp;
     }
+}
+
+// The share of a light's far part that is coarse (far_lists.rs): 0 up to
+// a r, a smoothstep up to 1 at 2 a r; all of it for a light of radius 0;
+// none without far lists.
+float coarse_weight(float d, float radius) {
+    if (u_far_radius <= 0.0) return 0.0;
+    if (radius <= 0.0) return 1.0;
+    return smoothstep(u_far_radius * radius, 2.0 * u_far_radius * radius, d);
+}
+
+// The diffuse light order-1 coefficients give a surface facing n.
+vec3 coarse_irradiance(vec3 c[4], vec3 n) {
+    return 0.282095 * c[0] + 0.488603 * (n.y * c[1] + n.z * c[2] + n.x * c[3]);
+}
+
+// far_light's sums (far_diffuse, far_specular) and, in the same loop, the
+// coarse part at surface s seen along V: its diffuse light as order-1
+// spherical harmonics of the incoming light, convolved with the clamped
+// cosine (A_0 = pi, A_1 = 2 pi / 3) and band 0 moved so that s's own
+// normal gets its exact diffuse light; its specular light; `total` the sum
+// of its radiances' brightest channels (the bound's C).
+void far_coarse(Surface s, vec3 V, out vec3 far_diffuse, out vec3 far_specular,
+                out vec3 c[4], out vec3 specular, out float total) {
+    for (int j = 0; j < 4; ++j) c[j] = vec3(0.0);
+    far_diffuse = vec3(0.0);
+    far_specular = vec3(0.0);
+    specular = vec3(0.0);
+    vec3 diffuse = vec3(0.0);
+    total = 0.0;
+    for (int i = 0; i < u_light_count; ++i) {
+        Light light = light_at(i);
+        float radius = light.direction_radius.w;
+        if (radius < 0.0 || casts_shadow(i)) continue;
+        float dist = distance(s.P, light.position_type.xyz);
+        float far = 1.0 - near_weight(dist, radius);
+        if (far <= 0.0) continue;
+        vec3 d, sp;
+        surface_light(light, s.P, s.N, V, s.r, d, sp);
+        far_diffuse += far * d;
+        far_specular += far * sp;
+        float v = coarse_weight(dist, radius);
+        if (v <= 0.0) continue;   // (v > 0 only beyond a r >= r: all far there)
+        vec3 L;
+        float sin_sigma;
+        vec3 rad = v * light.color_cos_outer.rgb * light_factor(light, s.P, L, sin_sigma);
+        total += max(rad.r, max(rad.g, rad.b));
+        c[0] += 0.282095 * PI * rad;
+        c[1] += 0.488603 * L.y * (2.0 * PI / 3.0) * rad;
+        c[2] += 0.488603 * L.z * (2.0 * PI / 3.0) * rad;
+        c[3] += 0.488603 * L.x * (2.0 * PI / 3.0) * rad;
+        diffuse += v * d;
+        specular += v * sp;
+    }
+    c[0] += (diffuse - coarse_irradiance(c, s.N)) / 0.282095;
 }
 
 // The G-buffer texel the far-field pass samples for its texel t (t counted
@@ -106,6 +168,81 @@ float far_neighbour(int k, ivec2 t0, vec2 f, Surface s, float eye_distance,
     return same_surface(s, o, eye_distance) ? w : 0.0;
 }
 
+#ifdef TILED_SHADING
+// Tiled shading's pass (glsl/deferred/tiled_shading.frag reads u_clusters
+// and sets g_cluster, this pixel's cluster, before calling far_field).
+uniform int u_far_table;        // 0: no far lists; else the far table's first texel
+uniform int u_far_index_base;   // the far lists' light numbers' first texel
+int g_cluster = 0;
+
+// The far part less the coarse part of the lights in this pixel's
+// cluster's far list: every light whose far part is not all coarse here
+// (far_lists.rs bins them at 2 a r), summed exactly.
+void far_list_light(Surface s, vec3 V, out vec3 diffuse, out vec3 specular) {
+    diffuse = vec3(0.0);
+    specular = vec3(0.0);
+    int offset = u_far_index_base + int(texelFetch(u_clusters, u_far_table + 2 * g_cluster).r);
+    int count = int(texelFetch(u_clusters, u_far_table + 2 * g_cluster + 1).r);
+    for (int k = 0; k < count; ++k) {
+        int i = int(texelFetch(u_clusters, offset + k).r);
+        Light light = light_at(i);
+        float radius = light.direction_radius.w;
+        float d = distance(s.P, light.position_type.xyz);
+        float far = (1.0 - near_weight(d, radius)) * (1.0 - coarse_weight(d, radius));
+        if (far <= 0.0) continue;
+        vec3 dl, sp;
+        surface_light(light, s.P, s.N, V, s.r, dl, sp);
+        diffuse += far * dl;
+        specular += far * sp;
+    }
+}
+
+// How far off a sample's coarse part may be, estimated, for a pixel to
+// take it (linear light, before the material): 0.5/255
+// (RenderSettings::far_coarse_tolerance).
+uniform float u_coarse_tolerance;
+
+// The sample whose coarse part a pixel no sample stands for takes: of its
+// four within u_coarse_reach, the one with the smallest estimate of the
+// bound (far_coarse_bound): C times half the turn of the normal plus the
+// move over the shortest coarse distance, 2 u_coarse_reach (G ~ 6 C /
+// d_min); false when none is within reach and u_coarse_tolerance.
+bool far_coarse_texel(Surface s, ivec2 t0, out ivec2 best, out Surface bo) {
+    ivec2 grid = (ivec2(u_viewport.zw) + u_far_scale - 1) / u_far_scale;
+    float lowest = u_coarse_tolerance;
+    bool found = false;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), grid - 1);
+        Surface o = read_geometry_texel(far_sample_texel(t));
+        float d = distance(o.P, s.P);
+        float total = texelFetch(u_far_sh4, far_texel(t), 0).a;
+        float score = total * (0.5 * length(s.N - o.N) + 3.0 * d / u_coarse_reach);
+        if (o.depth < 1.0 && d <= u_coarse_reach && score <= lowest) {
+            lowest = score;
+            best = t;
+            bo = o;
+            found = true;
+        }
+    }
+    return found;
+}
+
+// That sample's coarse part: its harmonics at this pixel's normal, its
+// specular light.
+void far_coarse_read(Surface s, ivec2 t, out vec3 diffuse, out vec3 specular) {
+    vec4 a = texelFetch(u_far_sh1, far_texel(t), 0);
+    vec4 b = texelFetch(u_far_sh2, far_texel(t), 0);
+    vec4 c = texelFetch(u_far_sh3, far_texel(t), 0);
+    vec3 co[4];
+    co[0] = a.rgb;
+    co[1] = vec3(a.a, b.rg);
+    co[2] = vec3(b.ba, c.r);
+    co[3] = c.gba;
+    diffuse = max(coarse_irradiance(co, s.N), vec3(0.0));
+    specular = texelFetch(u_far_sh4, far_texel(t), 0).rgb;
+}
+#endif
+
 // This pixel's far light times its material: interpolated (bilinearly)
 // from those of the four samples around it that stand for its surface,
 // their weights renormalised; summed here over every light when none does.
@@ -129,9 +266,20 @@ vec3 far_field(Surface s, vec3 V, float eye_distance) {
     if (weight > 0.0) {
         diffuse /= weight;
         specular /= weight;
-    } else {
-        far_light(s, V, diffuse, specular);
+        return s.kd * diffuse + s.ks * specular;
     }
+#ifdef TILED_SHADING
+    // With far lists: its cluster's far list, and a sample's coarse part.
+    ivec2 t;
+    Surface o;
+    if (u_far_table > 0 && far_coarse_texel(s, t0, t, o)) {
+        vec3 cd, cs;
+        far_list_light(s, V, diffuse, specular);
+        far_coarse_read(s, t, cd, cs);
+        return s.kd * (diffuse + cd) + s.ks * (specular + cs);
+    }
+#endif
+    far_light(s, V, diffuse, specular);
     return s.kd * diffuse + s.ks * specular;
 }
 
@@ -276,6 +424,71 @@ bool far_bound_unbounded(vec4 worst, vec4 extra, float spread2) {
     return spread2 > 0.0 && (extra.y > 0.0 || any(greaterThanEqual(worst, vec4(TERM_LIMIT))));
 }
 
+// The coarse part's bound terms at sample s (far_lists.rs; the derivation
+// is in docs/deferred/far_field.md, "Far lists"): over the ball of radius
+// rho = u_coarse_reach around s, with d_min = max(a r, d_s - rho) and c =
+// the light's brightest channel times att(d_min):
+//   x: C = sum of the coarse radiances at s (the harmonics' truncation);
+//   y: G = sum 6 c / d_min (the coarse diffuse light's gradient);
+//   z: S = sum c (the coarse specular light, which the pixel takes as is);
+//   w: sum c LIGHT_RADIUS / d_min (the light's sphere against the horizon).
+// A spot light in the coarse part gives no bound (its cone is not in G).
+vec4 far_coarse_bound_terms(Surface s) {
+    vec4 t = vec4(0.0);
+    float rho = u_coarse_reach;
+    for (int i = 0; i < u_light_count; ++i) {
+        Light light = light_at(i);
+        float radius = light.direction_radius.w;
+        if (radius < 0.0 || casts_shadow(i)) continue;
+        vec3 p = light.position_type.xyz;
+        float d_s = distance(p, s.P);
+        float a = u_far_radius * radius;
+        if (radius > 0.0 && d_s + rho <= a) continue;   // no coarse part over the ball
+        if ((int(light.position_type.w) & 3) == LIGHT_SPOT) return vec4(TERM_LIMIT);
+        float d = max(max(a, d_s - rho), LIGHT_RADIUS);
+        vec3 k = light.atten_cos_inner.xyz;
+        vec3 rgb = light.color_cos_outer.rgb;
+        float c = max(rgb.r, max(rgb.g, rgb.b)) / (k.x + k.y * d + k.z * d * d);
+        vec3 L;
+        float sin_sigma;
+        vec3 rad = coarse_weight(d_s, radius) * rgb * light_factor(light, s.P, L, sin_sigma);
+        t.x += max(rad.r, max(rad.g, rad.b));
+        t.y += 6.0 * c / d;
+        t.z += c;
+        t.w += c * LIGHT_RADIUS / d;
+    }
+    return min(t, vec4(TERM_LIMIT));
+}
+
+// The coarse part's bound at a pixel no sample stands for (far lists):
+// the harmonics' truncation, which changes by at most half the turn of the
+// normal from the sample's (where band 0 makes them exact), C min(1/2,
+// |N - N_s| / 2); the move from the sample, G |x - x_s|; the spheres, 2 x
+// 0.25 sin sigma c; the specular part taken as is, S; the RGBA16F rounding.
+// 0 where the pixel sums its far part itself.
+float far_coarse_bound(Surface s) {
+#ifdef TILED_SHADING
+    ivec2 t0;
+    vec2 f;
+    far_cell(t0, f);
+    ivec2 t;
+    Surface o;
+    if (u_far_table > 0 && far_coarse_texel(s, t0, t, o)) {
+        vec4 c = texelFetch(u_far_sh1, far_texel(t), 0);
+        if (any(greaterThanEqual(c, vec4(TERM_LIMIT)))) return 1e30;
+#if VARIANT_MICROFACET
+        if (s.r.microfacet) return 1e30;   // its lobe is not bounded by 1
+#endif
+        float kd = max(s.kd.r, max(s.kd.g, s.kd.b));
+        float ks = max(s.ks.r, max(s.ks.g, s.ks.b));
+        float turn = min(0.5, 0.5 * length(s.N - o.N));
+        return kd * (c.x * turn + c.y * distance(o.P, s.P) + 0.5 * c.w)
+            + ks * c.z + max(kd, ks) * (c.x + c.z) * exp2(-9.0);
+    }
+#endif
+    return 0.0;
+}
+
 // This pixel's bound on |far part interpolated - far part|, in linear
 // light: from the worst of its samples' terms, its own material and the
 // weighted distances to the samples. 0 where it sums its own far part;
@@ -283,7 +496,7 @@ bool far_bound_unbounded(vec4 worst, vec4 extra, float spread2) {
 float far_field_bound(Surface s, float eye_distance) {
     vec4 worst, extra;
     float off, spread2;
-    if (!far_bound_samples(s, eye_distance, worst, extra, off, spread2)) return 0.0;
+    if (!far_bound_samples(s, eye_distance, worst, extra, off, spread2)) return far_coarse_bound(s);
     if (far_bound_unbounded(worst, extra, spread2)) return 1e30;
     float kd = max(s.kd.r, max(s.kd.g, s.kd.b));
     float ks = max(s.ks.r, max(s.ks.g, s.ks.b));

@@ -16,6 +16,9 @@ layout(location = 0) out vec4 far_out[SH_ATTACHMENTS];
 #else
 layout(location = 0) out vec4 far_diffuse;
 layout(location = 1) out vec4 far_specular;
+// With far lists (u_far_radius > 0): the coarse part, order-1 harmonics'
+// 12 floats then its specular light and C (far_lists.rs).
+layout(location = 2) out vec4 far_coarse_out[4];
 #endif
 
 void main() {
@@ -42,13 +45,26 @@ void main() {
 #endif
     for (int k = 0; k < SH_ATTACHMENTS; ++k) far_out[k] = att[k];
 #else
-    if (s.depth < 1.0) far_light(s, V, d, sp);
+    for (int k = 0; k < 4; ++k) far_coarse_out[k] = vec4(0.0);
+    if (u_far_radius > 0.0 && s.depth < 1.0) {
+        vec3 c[4];
+        vec3 cs;
+        float total;
+        far_coarse(s, V, d, sp, c, cs, total);
+        far_coarse_out[0] = vec4(c[0], c[1].r);
+        far_coarse_out[1] = vec4(c[1].gb, c[2].rg);
+        far_coarse_out[2] = vec4(c[2].b, c[3]);
+        far_coarse_out[3] = vec4(cs, total);
+    } else if (s.depth < 1.0) {
+        far_light(s, V, d, sp);
+    }
     far_diffuse = vec4(d, 1.0);
     far_specular = vec4(sp, 1.0);
 #ifdef FAR_FIELD_BOUND
     // The bound's terms instead (render.far_field_bound).
     if (s.depth < 1.0) {
         far_bound_terms(s, V, d, sp, far_support_radius(t, s), far_diffuse, far_specular);
+        if (u_far_radius > 0.0) far_coarse_out[0] = far_coarse_bound_terms(s);
     } else {
         far_diffuse = vec4(0.0);
         far_specular = vec4(0.0);

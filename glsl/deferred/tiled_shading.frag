@@ -4,6 +4,12 @@
 // then the lights binned into its cluster (its screen tile, its depth
 // slice) on the CPU (src/frame/clusters.rs). The sum is made here, in
 // f32, and written once.
+// R32UI: per cluster, two texels (offset, count) into the light numbers,
+// which follow from texel u_index_base; the first u_global_count of those
+// are every pixel's. With far lists (common/far_field.glsl), each cluster's
+// far (offset, count) from texel u_far_table, its numbers from u_far_index_base.
+uniform usamplerBuffer u_clusters;
+#define TILED_SHADING 1
 #include "common/lighting.glsl"
 #include "common/shadow.glsl"
 #include "common/gbuffer_read.glsl"
@@ -14,10 +20,6 @@
 #ifdef FAR_FIELD_SH
 #include "common/far_field_sh.glsl"
 #endif
-// R32UI: per cluster, two texels (offset, count) into the light numbers,
-// which follow from texel u_index_base; the first u_global_count of those
-// are every pixel's.
-uniform usamplerBuffer u_clusters;
 uniform int u_index_base;
 uniform int u_global_count;
 uniform ivec3 u_grid;                  // tiles across, tiles up, depth slices
@@ -85,6 +87,9 @@ void main() {
     int count = int(texelFetch(u_clusters, 2 * cluster + 1).r);
     for (int k = 0; k < count; ++k)
         sum += shade_listed(int(texelFetch(u_clusters, offset + k).r), s, V);
+#ifdef FAR_FIELD
+    g_cluster = cluster;
+#endif
 #if defined(FAR_FIELD_SH)
     sum += far_field_sh(s, V, distance(u_eye, s.P));
 #elif defined(FAR_FIELD)

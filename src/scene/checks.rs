@@ -43,6 +43,20 @@ pub const TILE_SIZES: std::ops::RangeInclusive<u32> = 4..=256;
 /// The far-field scales `render.far_field` takes besides 0 (off): one
 /// sample per k x k pixels.
 pub const FAR_FIELD_SCALES: std::ops::RangeInclusive<u32> = 1..=32;
+/// The far lists' radii `render.far_radius` takes besides 0 (off), in
+/// whole cutoff radii (src/techniques/deferred/far_lists.rs).
+pub const FAR_RADII: std::ops::RangeInclusive<u32> = 1..=64;
+
+/// `render.far_radius`: 0 (off) or in FAR_RADII.
+pub(super) fn far_radius(a: u32) -> Result<u32> {
+    if a != 0 && !FAR_RADII.contains(&a) {
+        bail!(
+            "render.far_radius: expected 0 (off) or the far lists' radius in whole cutoff radii, 1 to 64, found {a}"
+        );
+    }
+    Ok(a)
+}
+
 /// The depth slices `render.depth_slices` takes (1: tiled, no slicing).
 pub const DEPTH_SLICES: std::ops::RangeInclusive<u32> = 1..=64;
 

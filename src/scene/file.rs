@@ -116,6 +116,7 @@ pub(super) struct RenderFile {
     pub(super) far_field: u32,
     pub(super) far_field_sh: bool,
     pub(super) near_radius: f32,
+    pub(super) far_radius: u32,
     pub(super) mirror_order: MirrorOrder,
     /// How many mirrors deep reflections go (1: mirrors seen in a mirror are blank).
     pub(super) mirror_depth: u32,
@@ -194,6 +195,7 @@ impl Default for RenderFile {
             far_field: 0,
             far_field_sh: false,
             near_radius: 1.0,
+            far_radius: 0,
             mirror_order: MirrorOrder::NormalFirst,
             mirror_depth: 1,
             mirror_clip: true,

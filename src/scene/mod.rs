@@ -19,6 +19,7 @@ pub mod bloom;
 pub mod camera_limits;
 mod checks;
 pub mod clip_planes;
+mod far_field;
 mod file;
 pub mod fxaa;
 pub mod gltf_material;

@@ -74,6 +74,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             r.far_field
         },
         far_field_bound: false,
+        far_coarse_tolerance: 0.5 / 255.0,
         far_field_sh: r.far_field_sh,
         near_radius: {
             if !(r.near_radius.is_finite() && r.near_radius > 0.0 && r.near_radius <= 1.0) {
@@ -84,6 +85,7 @@ pub(super) fn render_settings(f: &SceneFile) -> Result<RenderSettings> {
             }
             r.near_radius
         },
+        far_radius: super::checks::far_radius(r.far_radius)?,
         depth_slices: {
             if !(DEPTH_SLICES).contains(&r.depth_slices) {
                 bail!(
@@ -269,6 +271,11 @@ pub struct RenderSettings {
     /// With the far field: where each light's near part ends, as a fraction
     /// of its cutoff radius (1: at the radius); tiled shading bins at it.
     pub near_radius: f32,
+    /// With the far field: 0, or the far lists' radius a (0 or 1..=64;
+    /// src/techniques/deferred/far_lists.rs).
+    pub far_radius: u32,
+    /// Not in the scene file: how far off a coarse part a far-list pixel takes.
+    pub far_coarse_tolerance: f32,
     /// Planar mirrors (notes 05): the order of their passes, how deep
     /// reflections recurse, the clip plane and the winding fix (toggles that
     /// show what goes wrong without them).

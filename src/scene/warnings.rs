@@ -77,6 +77,7 @@ impl Scene {
         let path = r.path;
         let on_path = format!("has no effect on the {path} path");
         w.extend(super::ambient_occlusion::warning(r));
+        w.extend(super::far_field::warning(self));
         let mut warn = |key: &str, set: bool, value: String, why: &str| {
             if set && self.written(&format!("render.{key}")) {
                 w.push(format!("render.{key} = {value} {why}"));
@@ -92,8 +93,7 @@ impl Scene {
         );
         warn(
             "cutoff",
-            // The windowed falloff ends every light at its cutoff radius, on
-            // every path.
+            // The windowed falloff ends every light at its cutoff radius, on every path.
             matches!(path, RenderPath::Forward | RenderPath::Deferred)
                 && r.falloff != super::Falloff::Windowed
                 && r.cutoff != 5.0 / 256.0,

@@ -39,6 +39,7 @@ mod deferred_lighting;
 mod deferred_shading;
 mod far_field;
 mod far_field_sh;
+mod far_lists;
 mod gbuffer_material_variant;
 mod hardware_srgb;
 mod light_halves;

@@ -141,6 +141,19 @@ pub static NEAR_RADIUS: Knob = Knob {
     },
 };
 
+pub static FAR_RADIUS: Knob = Knob {
+    key: "render.far_radius",
+    label: "far lists' radius",
+    help: "tiled shading with a far field: 0, a pixel no sample stands for sums every light's far part; a >= 1, only the lights within 2 a cutoff radii of its cluster, the rest from a sample's harmonics",
+    kind: Kind::Count { min: 0, max: 8 },
+    get: |r| Value::Count(r.far_radius),
+    set: |r, v| {
+        if let Value::Count(n) = v {
+            r.far_radius = n;
+        }
+    },
+};
+
 pub static DEPTH_SLICES: Knob = Knob {
     key: "render.depth_slices",
     label: "depth slices",

@@ -64,6 +64,7 @@ pub const FAR_FIELD: Technique = Technique {
         &knobs::FAR_FIELD,
         &knobs::FAR_FIELD_SH,
         &knobs::NEAR_RADIUS,
+        &knobs::FAR_RADIUS,
         &knobs::CUTOFF,
     ],
     passes,
@@ -87,6 +88,13 @@ pub fn runs(scene: &Scene, lights: &FrameLights) -> bool {
     scene.render.path == RenderPath::Tiled
         && scene.render.far_field > 0
         && lights.lights.iter().any(|l| l.radius.is_some())
+}
+
+/// Whether the far lists run (far_lists.rs): the far field runs,
+/// `render.far_radius` is set, and the diffuse far light is not stored as
+/// order-2 harmonics (which has a fallback of its own).
+pub fn lists_on(scene: &Scene, lights: &FrameLights) -> bool {
+    runs(scene, lights) && scene.render.far_radius > 0 && !scene.render.far_field_sh
 }
 
 /// How far a sample's surface point may be from the pixel it stands for:
@@ -120,6 +128,17 @@ fn attachments(scene: &Scene) -> Vec<(&'static str, u32)> {
             "harmonics 20-23",
             "harmonics 24-26",
         ]
+    } else if scene.render.far_radius > 0 {
+        // Far lists (far_lists.rs): the coarse part's order-1 harmonics
+        // (12 floats), then its specular light and C.
+        &[
+            "diffuse",
+            "specular",
+            "coarse harmonics 0-3",
+            "coarse harmonics 4-7",
+            "coarse harmonics 8-11",
+            "coarse specular",
+        ]
     } else {
         &["diffuse", "specular"]
     };
@@ -144,6 +163,12 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     } else {
         "diffuse at the sample's normal"
     });
+    if scene.render.far_radius > 0 && !scene.render.far_field_sh {
+        draws.push_str(&format!(
+            "; the coarse part (beyond {} x the cutoff radius) as order-1 harmonics",
+            scene.render.far_radius
+        ));
+    }
     if scene.render.near_radius < 1.0 {
         draws.push_str(&format!(
             "; near part to {} x the cutoff radius",
@@ -248,6 +273,26 @@ fn set_uniforms(f: &Frame, p: &Program) {
     p.set_i32("u_light_count", f.lights.len() as i32);
     p.set_f32("u_far_reach", reach(f.scene, f.lights));
     p.set_f32("u_near_scale", f.scene.render.near_radius);
+    let lists = lists_on(f.scene, f.lights);
+    let a = if lists {
+        f.scene.render.far_radius as f32
+    } else {
+        0.0
+    };
+    p.set_f32("u_far_radius", a);
+    p.set_f32("u_coarse_reach", coarse_reach(f.lights, a));
+    p.set_f32("u_coarse_tolerance", f.scene.render.far_coarse_tolerance);
+}
+
+/// How far a sample's surface point may be from a pixel that takes its
+/// coarse part (far_lists.rs): half the smallest coarse inner radius, `a
+/// r_min / 2`. 0 without far lists or positive radii.
+pub fn coarse_reach(lights: &FrameLights, a: f32) -> f32 {
+    let r = (lights.lights.iter())
+        .filter_map(|l| l.radius)
+        .filter(|&r| r > 0.0)
+        .fold(f32::INFINITY, f32::min);
+    if r.is_finite() { 0.5 * a * r } else { 0.0 }
 }
 
 pub fn unbind_textures(f: &Frame) {

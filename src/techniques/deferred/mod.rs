@@ -19,6 +19,7 @@ pub mod composite;
 pub mod deferred_lighting;
 pub mod deferred_shading;
 pub mod far_field;
+pub mod far_lists;
 pub mod gbuffer;
 pub mod light_volumes;
 pub mod ltc_area_lights_deferred;

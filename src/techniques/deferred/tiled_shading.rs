@@ -48,7 +48,7 @@ use crate::gl::texture_buffer::{TextureBuffer, max_texels};
 use crate::scene::knobs;
 use crate::scene::{Light, LightKind, RenderPath, Scene};
 use crate::techniques::deferred::deferred_shading::accumulation_target;
-use crate::techniques::deferred::far_field;
+use crate::techniques::deferred::{far_field, far_lists};
 use anyhow::Result;
 use glam::{Mat4, Vec3};
 use glow::HasContext;
@@ -251,10 +251,16 @@ impl RunPasses for TiledShading {
 
         // 2. Upload the lists (the lights are the frame's buffer texture,
         // written when the scene's lights change: FrameUniforms::lights_texture).
-        let lists: Vec<u8> = (bins.clusters.iter().flatten())
-            .chain(&bins.indices)
-            .flat_map(|v| v.to_ne_bytes())
-            .collect();
+        // With far lists (far_lists.rs), each cluster's far list after them.
+        let far_bins = far_field::lists_on(f.scene, f.lights).then(|| {
+            let casting = f.shadows.casting_lights();
+            let bounds = far_lists::far_bounds(f.scene, f.lights, &casting, bounding_sphere);
+            let view = u.view * f.view.reflection;
+            far_lists::bin(&grid, view, u.projection, (w as u32, h as u32), &bounds)
+        });
+        let far_bins = far_bins.filter(|b| far_lists::texel_count(&bins, b) <= max_texels(gl));
+        let (texels, index_base, far_index_base) = far_lists::texels(&bins, far_bins.as_ref());
+        let lists: Vec<u8> = texels.iter().flat_map(|v| v.to_ne_bytes()).collect();
         self.clusters.write(&lists);
         if f.view.name == "camera" {
             // Kept for the pixel probe (src/renderer/probe.rs).
@@ -291,10 +297,16 @@ impl RunPasses for TiledShading {
             }
             p.set_mat4("u_mvp", &Mat4::IDENTITY);
             p.set_mat4("u_view", &(u.view * f.view.reflection));
-            p.set_i32("u_index_base", 2 * bins.clusters.len() as i32);
+            p.set_i32("u_index_base", index_base);
             p.set_i32("u_global_count", bins.global as i32);
             if far {
                 far_field::bind_for_reading(f, p);
+                // 0: no far lists; else the far table's first texel.
+                let table = far_bins
+                    .as_ref()
+                    .map_or(0, |_| 2 * bins.clusters.len() as i32);
+                p.set_i32("u_far_table", table);
+                p.set_i32("u_far_index_base", far_index_base);
             }
             p.set_ivec3(
                 "u_grid",

@@ -122,7 +122,11 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         .collect();
     let programs = (alpha.into_iter())
         .map(|a| {
-            let role = if a { "G-buffer, alpha test" } else { "G-buffer" };
+            let role = if a {
+                "G-buffer, alpha test"
+            } else {
+                "G-buffer"
+            };
             PlanProgram::new(role, defines(thin, packed, material, a))
         })
         .collect();
@@ -200,7 +204,12 @@ fn with_alpha_test((thin, packed, material, alpha): Needs, alpha_test: i32) -> N
 
 /// The `#define`s of the program for (thin, packed normal, material
 /// variant, alpha test): what the pass builds, and what the plan names.
-fn defines(thin: bool, packed: bool, material: MaterialVariant, alpha: bool) -> Vec<(&'static str, String)> {
+fn defines(
+    thin: bool,
+    packed: bool,
+    material: MaterialVariant,
+    alpha: bool,
+) -> Vec<(&'static str, String)> {
     let mut defines = material.defines();
     if !alpha {
         defines.push(("NO_ALPHA_TEST", "1".into()));
@@ -229,8 +238,7 @@ impl GBufferPass {
             return Ok(p);
         }
         let (thin, packed, material, alpha) = needs;
-        let program = (self.build)
-            .build_with(&STAGES, &defines(thin, packed, material, alpha))?;
+        let program = (self.build).build_with(&STAGES, &defines(thin, packed, material, alpha))?;
         Ok(self.programs[i].get_or_init(|| program))
     }
 
@@ -266,8 +274,7 @@ impl RunPasses for GBufferPass {
     /// The programs the objects' alpha tests need (a transparent object's
     /// too: one more program at most).
     fn prepare(&self, _: &Pass, f: &Frame) -> Result<()> {
-        let tests: BTreeSet<i32> =
-            f.draws.items.iter().map(|d| d.alpha_test).collect();
+        let tests: BTreeSet<i32> = f.draws.items.iter().map(|d| d.alpha_test).collect();
         let frame = needs(f);
         for t in tests {
             self.program(with_alpha_test(frame, t))?;

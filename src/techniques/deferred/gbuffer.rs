@@ -115,14 +115,13 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     let packed = gbuffer::octahedral(scene);
     // One program for the objects that test no alpha, one for those that do
     // (`with_alpha_test`), in that order.
-    let alpha: BTreeSet<bool> = (scene.objects.iter())
-        .map(|o| &scene.materials[o.material])
-        .filter(|m| !m.is_transparent())
-        .map(|m| !scene.render.specialize || m.alpha_test != AlphaTest::Always)
-        .collect();
-    let programs = (alpha.into_iter())
+    let programs = (alpha_programs(scene).into_iter())
         .map(|a| {
-            let role = if a { "G-buffer, alpha test" } else { "G-buffer" };
+            let role = if a {
+                "G-buffer, alpha test"
+            } else {
+                "G-buffer"
+            };
             PlanProgram::new(role, defines(thin, packed, material, a))
         })
         .collect();
@@ -135,6 +134,25 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         )
         .with_programs(programs),
     ]
+}
+
+/// Whether the opaque objects are drawn with a program without the alpha
+/// test (false), with it (true), or both: the G-buffer's and the light
+/// pre-pass's combine (deferred_lighting.rs) decide alike, per object by
+/// [`tests_alpha`].
+pub fn alpha_programs(scene: &Scene) -> BTreeSet<bool> {
+    (scene.objects.iter())
+        .map(|o| &scene.materials[o.material])
+        .filter(|m| !m.is_transparent())
+        .map(|m| tests_alpha(scene.render.specialize, m.alpha_test.code()))
+        .collect()
+}
+
+/// Whether an object whose material's alpha test is `alpha_test`
+/// (`AlphaTest::code`, `DrawItem::alpha_test`) is drawn with the program
+/// that tests: always with `render.specialize` off.
+pub fn tests_alpha(specialize: bool, alpha_test: i32) -> bool {
+    !specialize || alpha_test != AlphaTest::Always.code()
 }
 
 fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {
@@ -190,17 +208,17 @@ fn needs(f: &Frame) -> Needs {
 /// `frame`'s needs for an object whose material's alpha test is
 /// `alpha_test` (`DrawItem::alpha_test`).
 fn with_alpha_test((thin, packed, material, alpha): Needs, alpha_test: i32) -> Needs {
-    (
-        thin,
-        packed,
-        material,
-        alpha || alpha_test != AlphaTest::Always.code(),
-    )
+    (thin, packed, material, tests_alpha(!alpha, alpha_test))
 }
 
 /// The `#define`s of the program for (thin, packed normal, material
 /// variant, alpha test): what the pass builds, and what the plan names.
-fn defines(thin: bool, packed: bool, material: MaterialVariant, alpha: bool) -> Vec<(&'static str, String)> {
+fn defines(
+    thin: bool,
+    packed: bool,
+    material: MaterialVariant,
+    alpha: bool,
+) -> Vec<(&'static str, String)> {
     let mut defines = material.defines();
     if !alpha {
         defines.push(("NO_ALPHA_TEST", "1".into()));
@@ -229,8 +247,7 @@ impl GBufferPass {
             return Ok(p);
         }
         let (thin, packed, material, alpha) = needs;
-        let program = (self.build)
-            .build_with(&STAGES, &defines(thin, packed, material, alpha))?;
+        let program = (self.build).build_with(&STAGES, &defines(thin, packed, material, alpha))?;
         Ok(self.programs[i].get_or_init(|| program))
     }
 
@@ -266,8 +283,7 @@ impl RunPasses for GBufferPass {
     /// The programs the objects' alpha tests need (a transparent object's
     /// too: one more program at most).
     fn prepare(&self, _: &Pass, f: &Frame) -> Result<()> {
-        let tests: BTreeSet<i32> =
-            f.draws.items.iter().map(|d| d.alpha_test).collect();
+        let tests: BTreeSet<i32> = f.draws.items.iter().map(|d| d.alpha_test).collect();
         let frame = needs(f);
         for t in tests {
             self.program(with_alpha_test(frame, t))?;

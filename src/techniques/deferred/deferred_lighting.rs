@@ -29,6 +29,7 @@ use crate::frame::gbuffer;
 use crate::frame::gbuffer::MaterialVariant;
 use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
+use crate::frame::material_variant::alpha_programs;
 use crate::frame::plan::Pass;
 use crate::frame::plan_programs::PlanProgram;
 use crate::frame::post::world_target;
@@ -42,7 +43,9 @@ use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
-use crate::techniques::deferred::gbuffer::{alpha_programs, tests_alpha};
+use crate::techniques::deferred::deferred_lighting_combine::{
+    COMBINE_STAGES, CombineNeeds, combine_defines, combine_index, combine_needs,
+};
 use crate::techniques::deferred::light_volumes::{draw_bounded_volumes, volume_pass};
 use crate::techniques::deferred::ltc_area_lights_deferred::{LightPrepass, prepass_pass};
 use anyhow::Result;
@@ -123,47 +126,6 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     );
     v
 }
-
-/// What a combine program is built for: tinting by the cascade
-/// (shadow.cascade_colors), the material variant, and the alpha test.
-type CombineNeeds = (bool, MaterialVariant, bool);
-
-/// Which combine program: the tints, the alpha test, the material variant.
-fn combine_index((tints, material, alpha): CombineNeeds) -> usize {
-    usize::from(tints) * 16 + usize::from(alpha) * 8 + material.index()
-}
-
-/// The `#define`s of the combine program for `needs`: what the pass builds,
-/// and what the plan names.
-fn combine_defines((tints, material, alpha): CombineNeeds) -> Vec<(&'static str, String)> {
-    let mut defines = material.defines();
-    if !alpha {
-        defines.push(("NO_ALPHA_TEST", "1".into()));
-    }
-    if tints {
-        defines.push(("CASCADE_TINTS", "1".into()));
-    }
-    defines
-}
-
-/// The combine's needs for an object whose material's alpha test is
-/// `alpha_test` (`DrawItem::alpha_test`).
-fn combine_needs(scene: &Scene, alpha_test: i32) -> CombineNeeds {
-    (
-        shadows::cascade_tints(scene),
-        MaterialVariant::of(scene),
-        tests_alpha(scene.render.specialize, alpha_test),
-    )
-}
-
-/// The combine's shaders.
-const COMBINE_STAGES: [(u32, &str); 2] = [
-    (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
-    (
-        glow::FRAGMENT_SHADER,
-        "deferred/deferred_lighting_combine.frag",
-    ),
-];
 
 fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
     // The area lights' pass makes it when no light does.

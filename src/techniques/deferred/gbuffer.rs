@@ -29,6 +29,7 @@ use crate::frame::gbuffer;
 use crate::frame::gbuffer::MaterialVariant;
 use crate::frame::gbuffer_slim;
 use crate::frame::lights::FrameLights;
+use crate::frame::material_variant::{alpha_programs, tests_alpha};
 use crate::frame::plan::Pass;
 use crate::frame::plan_programs::PlanProgram;
 use crate::frame::targets::{Depth, TargetDesc};
@@ -36,7 +37,6 @@ use crate::frame::technique::LaterPrograms;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
-use crate::scene::AlphaTest;
 use crate::scene::knobs;
 use crate::scene::material::GBufferNormals;
 use crate::scene::texturing::Interpolation;
@@ -134,25 +134,6 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
         )
         .with_programs(programs),
     ]
-}
-
-/// Whether the opaque objects are drawn with a program without the alpha
-/// test (false), with it (true), or both: the G-buffer's and the light
-/// pre-pass's combine (deferred_lighting.rs) decide alike, per object by
-/// [`tests_alpha`].
-pub fn alpha_programs(scene: &Scene) -> BTreeSet<bool> {
-    (scene.objects.iter())
-        .map(|o| &scene.materials[o.material])
-        .filter(|m| !m.is_transparent())
-        .map(|m| tests_alpha(scene.render.specialize, m.alpha_test.code()))
-        .collect()
-}
-
-/// Whether an object whose material's alpha test is `alpha_test`
-/// (`AlphaTest::code`, `DrawItem::alpha_test`) is drawn with the program
-/// that tests: always with `render.specialize` off.
-pub fn tests_alpha(specialize: bool, alpha_test: i32) -> bool {
-    !specialize || alpha_test != AlphaTest::Always.code()
 }
 
 fn targets(scene: &Scene, _: &FrameLights) -> Vec<TargetDesc> {

@@ -29,7 +29,11 @@ out vec4 frag_color;
 
 void main() {
     vec2 uv = surface_uv();
+    // A material that tests nothing is drawn with NO_ALPHA_TEST
+    // (src/techniques/deferred/deferred_lighting.rs): no discard in the program.
+#ifndef NO_ALPHA_TEST
     alpha_test(material_alpha(uv));
+#endif
     vec3 D = vec3(0.0), S = vec3(0.0);
     if (u_has_light) {
         vec2 pixel = gl_FragCoord.xy / textureSize(u_diffuse_light, 0).xy;

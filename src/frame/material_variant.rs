@@ -70,3 +70,22 @@ impl MaterialVariant {
             + usize::from(self.normal_map)
     }
 }
+
+/// Whether the opaque objects are drawn with a program without the alpha
+/// test (false), with it (true), or both: the G-buffer's (techniques/deferred/gbuffer.rs)
+/// and the light pre-pass's combine (deferred_lighting.rs) decide alike, per object by
+/// [`tests_alpha`].
+pub fn alpha_programs(scene: &crate::scene::Scene) -> std::collections::BTreeSet<bool> {
+    (scene.objects.iter())
+        .map(|o| &scene.materials[o.material])
+        .filter(|m| !m.is_transparent())
+        .map(|m| tests_alpha(scene.render.specialize, m.alpha_test.code()))
+        .collect()
+}
+
+/// Whether an object whose material's alpha test is `alpha_test`
+/// (`AlphaTest::code`, `DrawItem::alpha_test`) is drawn with the program
+/// that tests: always with `render.specialize` off.
+pub fn tests_alpha(specialize: bool, alpha_test: i32) -> bool {
+    !specialize || alpha_test != crate::scene::AlphaTest::Always.code()
+}

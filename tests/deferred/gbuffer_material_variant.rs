@@ -14,7 +14,10 @@
 //!   tests nothing drawn with the program built with NO_ALPHA_TEST): the
 //!   general shader runs the alpha test for every object, and atrium's and
 //!   model-loading's alpha-tested leaves and banners are drawn between the
-//!   untested objects in both.
+//!   untested objects in both;
+//! * and so does the light pre-pass's combine, specialised alike
+//!   (techniques/deferred/deferred_lighting.rs): atrium and model-loading
+//!   on the pre-pass.
 
 use crate::common;
 use crate::with_path;
@@ -92,6 +95,7 @@ fn each_specialised_gbuffer_and_composite_gives_the_general_image() {
         ("bump-mapping.toml", RenderPath::Deferred),
         ("deferred-shading.toml", RenderPath::Prepass),
         ("atrium.toml", RenderPath::Prepass),
+        ("model-loading.toml", RenderPath::Prepass),
         ("model-loading.toml", RenderPath::Tiled),
     ] {
         let mut special = with_path(&common::scene(name), path);

@@ -1,7 +1,8 @@
 //! `gloss plan` names every program a pass draws with (src/frame/plan_programs.rs):
 //! the G-buffer's material variant, the composite's, forward's lighting
 //! variant (VARIANT_FORWARD_GLTF among its defines), deferred shading's
-//! (both forms) and the shadow pass's
+//! (both forms), the light pre-pass's combine (with and without the alpha
+//! test) and the shadow pass's
 //! depth-only and alpha-test caster programs. Here the plan's defines are
 //! compared with those of the programs each pass of an executed frame put in
 //! use (glUseProgram in the pass), read back from the recording layer, which
@@ -164,6 +165,11 @@ fn the_plan_names_the_defines_of_every_program_the_frame_uses() {
             }),
         ),
         ("light-prepass", scene("light-prepass", |_| {})),
+        ("light-prepass, general", scene("light-prepass", general)),
+        (
+            "model-loading, light pre-pass",
+            scene("model-loading", |s| s.render.path = RenderPath::Prepass),
+        ),
         (
             "model-loading (alpha-tested leaves)",
             scene("model-loading", |_| {}),
@@ -193,6 +199,7 @@ fn the_plan_names_the_defines_of_every_program_the_frame_uses() {
         "shadow map",
         "cascaded shadow map",
         "lighting",
+        "combine",
     ] {
         assert!(passes.contains(pass), "no {pass} pass checked: {passes:?}");
     }
@@ -204,6 +211,8 @@ fn the_plan_names_the_defines_of_every_program_the_frame_uses() {
         "Phong",
         "per light",
         "single pass",
+        "combine",
+        "combine, alpha test",
     ] {
         assert!(roles.contains(role), "no {role} program checked: {roles:?}");
     }

@@ -14,18 +14,28 @@
 //!    depth writes; each fragment reads its light and applies its own
 //!    material at full precision: kd (ambient + D) + ks S.
 //!
+//! The combine's program is specialised like the G-buffer's (gbuffer.rs):
+//! built with the scene's `MaterialVariant` defines, and an object whose
+//! material tests no alpha drawn with the program built with
+//! `NO_ALPHA_TEST` (`render.specialize = false`: the general program, the
+//! alpha test for every object). `gloss plan` names the programs.
+//!
 //! GL state: step 2 as light_volumes.rs; step 3 sets GL_LEQUAL, depth writes
 //! off, back-face culling, glFrontFace per object, and restores them.
 
 use crate::frame::draw_list::DrawList;
 use crate::frame::environment::Environment;
 use crate::frame::gbuffer;
+use crate::frame::gbuffer::MaterialVariant;
 use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
+use crate::frame::material_variant::alpha_programs;
 use crate::frame::plan::Pass;
+use crate::frame::plan_programs::PlanProgram;
 use crate::frame::post::world_target;
 use crate::frame::shadows;
 use crate::frame::targets::{Depth, LIGHT_ACCUMULATION, TargetDesc};
+use crate::frame::technique::LaterPrograms;
 use crate::frame::uniforms::{LIGHTS_BINDING, unit};
 use crate::frame::variant::LightingVariant;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
@@ -33,10 +43,15 @@ use crate::gl::program::Program;
 use crate::scene::knobs;
 use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
+use crate::techniques::deferred::deferred_lighting_combine::{
+    COMBINE_STAGES, CombineNeeds, combine_defines, combine_index, combine_needs,
+};
 use crate::techniques::deferred::light_volumes::{draw_bounded_volumes, volume_pass};
 use crate::techniques::deferred::ltc_area_lights_deferred::{LightPrepass, prepass_pass};
 use anyhow::Result;
 use glow::HasContext;
+use std::cell::OnceCell;
+use std::collections::BTreeSet;
 
 pub const DEFERRED_LIGHTING: Technique = Technique {
     name: "deferred_lighting",
@@ -95,7 +110,20 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
             "linear"
         }
     );
-    v.push(Pass::new("combine", world_target(scene), draws, file!()).step(COMBINE));
+    // One program for the objects that test no alpha, one for those that
+    // do, as the G-buffer's.
+    let (tints, material) = (shadows::cascade_tints(scene), MaterialVariant::of(scene));
+    let programs = (alpha_programs(scene).into_iter())
+        .map(|a| {
+            let role = if a { "combine, alpha test" } else { "combine" };
+            PlanProgram::new(role, combine_defines((tints, material, a)))
+        })
+        .collect();
+    v.push(
+        Pass::new("combine", world_target(scene), draws, file!())
+            .step(COMBINE)
+            .with_programs(programs),
+    );
     v
 }
 
@@ -119,9 +147,10 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
 
 struct DeferredLighting {
     light: Program,
-    combine: Program,
-    /// The same, tinting by the cascade (shadow.cascade_colors).
-    combine_tinted: Program,
+    build: LaterPrograms,
+    /// The combine's programs, by [`combine_index`], each built the first
+    /// frame that needs it.
+    combine: [OnceCell<Program>; 32],
     /// The area lights' diffuse and specular light (after step 2).
     area_lights: LightPrepass,
 }
@@ -134,25 +163,27 @@ fn create(p: &Programs) -> Result<Box<dyn RunPasses>> {
     ])?;
     light.bind_uniform_block("Lights", LIGHTS_BINDING);
     shadows::setup_program(&light);
-    let stages = [
-        (glow::VERTEX_SHADER, "deferred/gbuffer.vert"),
-        (
-            glow::FRAGMENT_SHADER,
-            "deferred/deferred_lighting_combine.frag",
-        ),
-    ];
-    let combine = p.build(&stages)?;
-    let combine_tinted = p.build_with(&stages, &[("CASCADE_TINTS", "1".into())])?;
-    combine_tinted.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);
     Ok(Box::new(DeferredLighting {
         light,
-        combine,
-        combine_tinted,
+        build: p.later(),
+        combine: std::array::from_fn(|_| OnceCell::new()),
         area_lights: LightPrepass::create(p)?,
     }))
 }
 
 impl RunPasses for DeferredLighting {
+    /// The combine programs the objects' alpha tests need.
+    fn prepare(&self, pass: &Pass, f: &Frame) -> Result<()> {
+        if pass.step != COMBINE {
+            return Ok(());
+        }
+        let tests: BTreeSet<i32> = f.draws.items.iter().map(|d| d.alpha_test).collect();
+        for t in tests {
+            self.combine_program(combine_needs(f.scene, t))?;
+        }
+        Ok(())
+    }
+
     fn run(&self, pass: &Pass, f: &Frame) {
         match pass.step {
             LIGHT_PREPASS => self.light_prepass(f),
@@ -170,14 +201,64 @@ impl DeferredLighting {
         volume_pass(f, &self.light, draw_bounded_volumes);
     }
 
+    /// The combine program for `needs`, built now if no frame has needed
+    /// it yet.
+    fn combine_program(&self, needs: CombineNeeds) -> Result<&Program> {
+        let i = combine_index(needs);
+        if let Some(p) = self.combine[i].get() {
+            return Ok(p);
+        }
+        let program = self
+            .build
+            .build_with(&COMBINE_STAGES, &combine_defines(needs))?;
+        if needs.0 {
+            program.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);
+        }
+        Ok(self.combine[i].get_or_init(|| program))
+    }
+
+    /// Put the combine program for `needs` in use with the pass's uniforms
+    /// and textures; None (and a warning) if it could not be built (built
+    /// by `prepare`, which the renderer calls first).
+    fn use_combine(&self, f: &Frame, needs: CombineNeeds, light: bool) -> Option<&Program> {
+        let p = match self.combine_program(needs) {
+            Ok(p) => p,
+            Err(e) => {
+                eprintln!("warning: the light pre-pass's combine did not draw: {e:#}");
+                return None;
+            }
+        };
+        let (gl, u) = (f.gl, f.uniforms);
+        unsafe {
+            p.use_program();
+            p.set_mat4("u_view_projection", &u.view_projection);
+            p.set_vec3("u_ambient", f.scene.render.ambient);
+            super::ambient_light::bind_result(f, p);
+            p.set_bool("u_output_srgb", u.output_srgb);
+            p.set_bool("u_has_light", light);
+            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
+            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
+            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
+            // Texture coordinates and vertex colours perspective-correct or
+            // affine (notes 01 §4.1, §5.1).
+            let affine = f.scene.render.interpolation == Interpolation::Affine;
+            p.set_bool("u_affine", affine);
+            p.set_i32("u_diffuse_light", unit::LIGHT as i32);
+            p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
+            // The environment reflective materials mirror (notes 03,
+            // Implementation), filtered across the cube map's faces.
+            p.set_vec3("u_eye", u.eye);
+            f.draws.environment.bind(gl, p);
+            image_based_lighting::bind(gl, p, f.draws.environment.ibl.as_ref());
+            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
+            gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
+        }
+        Some(p)
+    }
+
     /// Step 3: draw the scene again, combining light and material.
     fn combine(&self, f: &Frame) {
         let tints = shadows::cascade_tints(f.scene);
-        let p = if tints {
-            &self.combine_tinted
-        } else {
-            &self.combine
-        };
         let (gl, u) = (f.gl, f.uniforms);
         let gbuf = f.targets.get(gbuffer::NAME);
         let output = f.targets.get(world_target(f.scene));
@@ -238,32 +319,11 @@ impl DeferredLighting {
             gl.enable(glow::CULL_FACE);
             gl.cull_face(glow::BACK);
 
-            p.use_program();
             // The cascade colours: the cascades' ranges (shadow.cascade_colors).
             if tints {
                 f.shadows.bind_cascade_block(gl, true);
             }
-            p.set_mat4("u_view_projection", &u.view_projection);
-            p.set_vec3("u_ambient", f.scene.render.ambient);
-            super::ambient_light::bind_result(f, p);
-            p.set_bool("u_output_srgb", u.output_srgb);
-            p.set_bool("u_has_light", light.is_some());
-            p.set_i32("u_diffuse_texture", unit::DIFFUSE_TEXTURE as i32);
-            p.set_i32("u_normal_map", unit::NORMAL_MAP as i32);
-            p.set_i32("u_specular_map", unit::SPECULAR_MAP as i32);
-            // Texture coordinates and vertex colours perspective-correct or
-            // affine (notes 01 §4.1, §5.1).
-            let affine = f.scene.render.interpolation == Interpolation::Affine;
-            p.set_bool("u_affine", affine);
-            p.set_i32("u_diffuse_light", unit::LIGHT as i32);
-            p.set_i32("u_specular_light", unit::SPECULAR_LIGHT as i32);
-            // The environment reflective materials mirror (notes 03,
-            // Implementation), filtered across the cube map's faces.
-            p.set_vec3("u_eye", u.eye);
             gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
-            f.draws.environment.bind(gl, p);
-            image_based_lighting::bind(gl, p, f.draws.environment.ibl.as_ref());
-            f.view.set_uniforms(p, f.uniforms.eye, &f.scene.clip_planes);
             gl.active_texture(glow::TEXTURE0 + unit::LIGHT);
             gl.bind_texture(glow::TEXTURE_2D, light.map(|t| t.colors[0].id));
             gl.active_texture(glow::TEXTURE0 + unit::SPECULAR_LIGHT);
@@ -271,8 +331,18 @@ impl DeferredLighting {
             gl.active_texture(glow::TEXTURE0 + unit::DIFFUSE_TEXTURE);
             // Transparent objects are drawn later, sorted (blending/transparency.rs);
             // mirrors by the mirror technique (stencil/mirror.rs).
+            // The program in use, and what it was built for.
+            let mut current: Option<(CombineNeeds, Option<&Program>)> = None;
             for i in f.opaque_order() {
                 let d = &f.draws.items[i];
+                // The program its alpha test needs, put in use when it changes.
+                let want = combine_needs(f.scene, d.alpha_test);
+                if current.map(|c| c.0) != Some(want) {
+                    current = Some((want, self.use_combine(f, want, light.is_some())));
+                }
+                let Some((_, Some(p))) = current else {
+                    continue;
+                };
                 // The material's face culling (notes 01 §3.4): back faces
                 // (the default), front faces, both, or none.
                 match d.cull.gl() {

@@ -29,6 +29,7 @@ use crate::frame::gbuffer;
 use crate::frame::gbuffer::MaterialVariant;
 use crate::frame::gbuffer_slim;
 use crate::frame::lights::FrameLights;
+use crate::frame::material_variant::{alpha_programs, tests_alpha};
 use crate::frame::plan::Pass;
 use crate::frame::plan_programs::PlanProgram;
 use crate::frame::targets::{Depth, TargetDesc};
@@ -36,7 +37,6 @@ use crate::frame::technique::LaterPrograms;
 use crate::frame::uniforms::unit;
 use crate::frame::{Frame, Programs, RunPasses, Runs, Technique};
 use crate::gl::program::Program;
-use crate::scene::AlphaTest;
 use crate::scene::knobs;
 use crate::scene::material::GBufferNormals;
 use crate::scene::texturing::Interpolation;
@@ -115,12 +115,7 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     let packed = gbuffer::octahedral(scene);
     // One program for the objects that test no alpha, one for those that do
     // (`with_alpha_test`), in that order.
-    let alpha: BTreeSet<bool> = (scene.objects.iter())
-        .map(|o| &scene.materials[o.material])
-        .filter(|m| !m.is_transparent())
-        .map(|m| !scene.render.specialize || m.alpha_test != AlphaTest::Always)
-        .collect();
-    let programs = (alpha.into_iter())
+    let programs = (alpha_programs(scene).into_iter())
         .map(|a| {
             let role = if a {
                 "G-buffer, alpha test"
@@ -194,12 +189,7 @@ fn needs(f: &Frame) -> Needs {
 /// `frame`'s needs for an object whose material's alpha test is
 /// `alpha_test` (`DrawItem::alpha_test`).
 fn with_alpha_test((thin, packed, material, alpha): Needs, alpha_test: i32) -> Needs {
-    (
-        thin,
-        packed,
-        material,
-        alpha || alpha_test != AlphaTest::Always.code(),
-    )
+    (thin, packed, material, tests_alpha(!alpha, alpha_test))
 }
 
 /// The `#define`s of the program for (thin, packed normal, material

@@ -17,6 +17,7 @@
 pub mod ambient_light;
 pub mod composite;
 pub mod deferred_lighting;
+pub mod deferred_lighting_combine;
 pub mod deferred_shading;
 pub mod far_field;
 pub mod far_lists;

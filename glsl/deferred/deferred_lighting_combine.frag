@@ -41,9 +41,16 @@ void main() {
         S = texture(u_specular_light, pixel).rgb;
     }
     vec3 ambient = u_ambient * material_occlusion(uv);
+    // NO_AMBIENT_OCCLUSION, NO_IBL: a variant for a scene without them
+    // (deferred_lighting_combine.rs), whose uniform branches llvmpipe would
+    // run all the same.
+    float ao = 1.0;
+#ifndef NO_AMBIENT_OCCLUSION
     if (u_has_ambient_occlusion) {
-        ambient *= texture(u_ambient_occlusion, gl_FragCoord.xy / textureSize(u_ambient_occlusion, 0).xy).r;
+        ao = texture(u_ambient_occlusion, gl_FragCoord.xy / textureSize(u_ambient_occlusion, 0).xy).r;
     }
+#endif
+    ambient *= ao;
     vec3 N = bumped_normal(safe_normal(v_normal, v_position), uv);
     vec3 mirrored = environment_reflection(u_reflectivity, N, normalize(u_eye - v_position));
     vec3 kd = material_diffuse(uv) * surface_color();
@@ -51,13 +58,13 @@ void main() {
     if (u_pbr && u_has_metal_rough_map) ks = vec3(material_triple(uv).z);
     // Image-based lighting (render.ibl) in place of the constant ambient,
     // occluded alike.
+#ifndef NO_IBL
     if (u_has_ibl) {
-        float ao = u_has_ambient_occlusion
-            ? texture(u_ambient_occlusion, gl_FragCoord.xy / textureSize(u_ambient_occlusion, 0).xy).r : 1.0;
         ambient = vec3(0.0);
         mirrored += ao * material_occlusion(uv)
             * ibl_ambient(u_ambient, N, normalize(u_eye - v_position), kd, ks, material_reflectance());
     }
+#endif
 #ifdef CASCADE_TINTS
     g_cascade_tint = cascade_tint_at(v_position);
 #endif

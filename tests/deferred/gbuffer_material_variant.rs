@@ -97,6 +97,9 @@ fn each_specialised_gbuffer_and_composite_gives_the_general_image() {
         ("atrium.toml", RenderPath::Prepass),
         ("model-loading.toml", RenderPath::Prepass),
         ("model-loading.toml", RenderPath::Tiled),
+        // The combine with image-based lighting and the ambient light pass.
+        ("ibl.toml", RenderPath::Prepass),
+        ("ambient-occlusion.toml", RenderPath::Prepass),
     ] {
         let mut special = with_path(&common::scene(name), path);
         // Emission goes in the specular attachment, which deferred-shading's

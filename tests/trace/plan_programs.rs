@@ -167,6 +167,14 @@ fn the_plan_names_the_defines_of_every_program_the_frame_uses() {
         ("light-prepass", scene("light-prepass", |_| {})),
         ("light-prepass, general", scene("light-prepass", general)),
         (
+            "ibl, light pre-pass",
+            scene("ibl", |s| s.render.path = RenderPath::Prepass),
+        ),
+        (
+            "ambient-occlusion, light pre-pass",
+            scene("ambient-occlusion", |s| s.render.path = RenderPath::Prepass),
+        ),
+        (
             "model-loading, light pre-pass",
             scene("model-loading", |s| s.render.path = RenderPath::Prepass),
         ),

@@ -26,7 +26,6 @@
 use crate::frame::draw_list::DrawList;
 use crate::frame::environment::Environment;
 use crate::frame::gbuffer;
-use crate::frame::gbuffer::MaterialVariant;
 use crate::frame::image_based_lighting;
 use crate::frame::lights::FrameLights;
 use crate::frame::material_variant::alpha_programs;
@@ -44,7 +43,7 @@ use crate::scene::knobs;
 use crate::scene::texturing::Interpolation;
 use crate::scene::{RenderPath, Scene};
 use crate::techniques::deferred::deferred_lighting_combine::{
-    COMBINE_STAGES, CombineNeeds, combine_defines, combine_index, combine_needs,
+    COMBINE_STAGES, CombineNeeds, combine_needs,
 };
 use crate::techniques::deferred::light_volumes::{draw_bounded_volumes, volume_pass};
 use crate::techniques::deferred::ltc_area_lights_deferred::{LightPrepass, prepass_pass};
@@ -112,11 +111,10 @@ fn passes(scene: &Scene, lights: &FrameLights) -> Vec<Pass> {
     );
     // One program for the objects that test no alpha, one for those that
     // do, as the G-buffer's.
-    let (tints, material) = (shadows::cascade_tints(scene), MaterialVariant::of(scene));
     let programs = (alpha_programs(scene).into_iter())
         .map(|a| {
             let role = if a { "combine, alpha test" } else { "combine" };
-            PlanProgram::new(role, combine_defines((tints, material, a)))
+            PlanProgram::new(role, CombineNeeds::of(scene, a).defines())
         })
         .collect();
     v.push(
@@ -148,9 +146,9 @@ fn targets(scene: &Scene, lights: &FrameLights) -> Vec<TargetDesc> {
 struct DeferredLighting {
     light: Program,
     build: LaterPrograms,
-    /// The combine's programs, by [`combine_index`], each built the first
+    /// The combine's programs, by [`CombineNeeds::index`], each built the first
     /// frame that needs it.
-    combine: [OnceCell<Program>; 32],
+    combine: [OnceCell<Program>; 128],
     /// The area lights' diffuse and specular light (after step 2).
     area_lights: LightPrepass,
 }
@@ -204,14 +202,12 @@ impl DeferredLighting {
     /// The combine program for `needs`, built now if no frame has needed
     /// it yet.
     fn combine_program(&self, needs: CombineNeeds) -> Result<&Program> {
-        let i = combine_index(needs);
+        let i = needs.index();
         if let Some(p) = self.combine[i].get() {
             return Ok(p);
         }
-        let program = self
-            .build
-            .build_with(&COMBINE_STAGES, &combine_defines(needs))?;
-        if needs.0 {
+        let program = self.build.build_with(&COMBINE_STAGES, &needs.defines())?;
+        if needs.tints {
             program.bind_uniform_block("Cascades", shadows::CASCADES_BINDING);
         }
         Ok(self.combine[i].get_or_init(|| program))

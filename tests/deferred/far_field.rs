@@ -25,7 +25,7 @@ const FAR_BOUND: Tolerance = Tolerance {
     max_abs: Some(10.0 / 255.0),
 };
 
-fn far(scene: &Scene, k: u32) -> Scene {
+pub(super) fn far(scene: &Scene, k: u32) -> Scene {
     let mut s = with_path(scene, RenderPath::Tiled);
     s.render.far_field = k;
     s.render.accumulation = Accumulation::Rgba32f;
@@ -74,7 +74,7 @@ fn interpolated_far_field_stays_near_forward() {
     }
 }
 
-fn point(position: Vec3, k: [f32; 3]) -> Light {
+pub(super) fn point(position: Vec3, k: [f32; 3]) -> Light {
     Light {
         range: None,
         kind: LightKind::Point,

@@ -8,6 +8,7 @@
 //! printed bound, on the knot and spheres of many-lights, the curved field
 //! of spheres and a light just past the second radius.
 
+use super::far_field;
 use crate::common;
 use crate::with_path;
 use glam::Vec3;
@@ -15,14 +16,12 @@ use gloss::frame::clusters::Grid;
 use gloss::frame::lights::FrameLights;
 use gloss::image_compare::Tolerance;
 use gloss::renderer::Output;
-use gloss::scene::{Accumulation, Light, LightKind, RenderPath, Scene};
+use gloss::scene::{Light, RenderPath, Scene};
 use gloss::techniques::deferred::{far_lists, tiled_shading};
 
 fn far(scene: &Scene, k: u32, a: f32) -> Scene {
-    let mut s = with_path(scene, RenderPath::Tiled);
-    s.render.far_field = k;
+    let mut s = far_field::far(scene, k);
     s.render.far_radius = a as u32;
-    s.render.accumulation = Accumulation::Rgba32f;
     s
 }
 
@@ -168,21 +167,9 @@ fn far_lists_stay_within_their_bound_on_curved_surfaces_and_edges() {
     }
 }
 
+/// A point light with the LearnOpenGL-like falloff (Kc 1, Kl 0.7, Kq 1.8).
 fn point(position: Vec3) -> Light {
-    Light {
-        range: None,
-        kind: LightKind::Point,
-        position,
-        direction: Vec3::NEG_Y,
-        color: Vec3::new(1.0, 0.8, 0.6),
-        intensity: 1.0,
-        kc: 1.0,
-        kl: 0.7,
-        kq: 1.8,
-        inner_angle: 0.0,
-        outer_angle: 0.0,
-        shadow: None,
-    }
+    far_field::point(position, [1.0, 0.7, 1.8])
 }
 
 /// A light just past the second radius of the knot's and the sphere's
